@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: MIT
+// `stroma run` and `stroma check`.
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "CommandLine.h"
+#include "core/Runtime.h"
+#include "simulation/Scene.h"
+#include "simulation/StateFile.h"
+
+namespace stroma::cli {
+
+namespace {
+
+const std::vector<std::string> kSceneOptions = {"--data-path", "--log-json"};
+
+/// Loads the scene named by the arguments, with console and JSON sinks attached.
+/// Returns kSuccess or kBadInput (after printing why).
+int loadScene(const Arguments& a, Runtime& runtime, Scene& scene,
+              std::unique_ptr<std::ofstream>& jsonFile) {
+  if (a.positional.size() != 1)
+    return usageError(a.positional.empty() ? "expected a scene file"
+                                           : "expected one scene file, got " +
+                                                 std::to_string(a.positional.size()));
+  for (const auto& dir : a.values("--data-path")) runtime.addDataDirectory(dir);
+  scene.log().addSink(std::make_shared<StreamSink>(
+      std::cerr, a.has("--verbose") ? MessageLevel::info : MessageLevel::warning));
+  if (const std::string* json = a.value("--log-json")) {
+    jsonFile = std::make_unique<std::ofstream>(*json);
+    if (!*jsonFile) return usageError("cannot write the JSON log '" + *json + "'");
+    scene.log().addSink(std::make_shared<JsonLinesSink>(*jsonFile));
+  }
+  if (!scene.loadFile(a.positional.front())) {
+    const std::size_t errors = scene.log().errorCount();
+    std::cerr << "stroma: " << a.positional.front() << ": " << errors
+              << (errors == 1 ? " error" : " errors") << "; the scene was not run\n";
+    return kBadInput;
+  }
+  return kSuccess;
+}
+
+void printTimingSummary(const Scene& scene, const Timing& timing, long long steps, double dt) {
+  const double stepSeconds = timing.seconds("step");
+  std::printf("Ran %lld steps of %s (dt %g s, simulated time %g s)\n", steps,
+              scene.file().string().c_str(), dt, scene.root().time());
+  std::printf("  wall time %.6f s, %.1f steps/s\n", stepSeconds,
+              stepSeconds > 0 ? static_cast<double>(steps) / stepSeconds : 0.0);
+  std::printf("  %-24s %12s %10s %14s\n", "phase", "total (s)", "calls", "per call (ms)");
+  for (const auto& p : timing.phases())
+    std::printf("  %-24s %12.6f %10lld %14.4f\n", p.name.c_str(), p.seconds, p.calls,
+                p.calls ? 1e3 * p.seconds / static_cast<double>(p.calls) : 0.0);
+}
+
+}  // namespace
+
+int runCommand(const std::vector<std::string>& args) {
+  Arguments a;
+  std::string error;
+  std::vector<std::string> valueOptions = kSceneOptions;
+  valueOptions.insert(valueOptions.end(),
+                      {"-n", "--steps", "--dt", "--threads", "--export-state", "--export-every"});
+  if (!parseArguments(args, valueOptions, {"--verbose"}, a, error)) return usageError(error);
+  long long steps = 100, threads = 0, exportEvery = 0;
+  double dt = 0;
+  if (const std::string* s = a.value("--steps")) a.options["-n"].push_back(*s);
+  if (!readInteger(a, "-n", 0, steps, error) || !readInteger(a, "--threads", 0, threads, error) ||
+      !readInteger(a, "--export-every", 1, exportEvery, error) || !readReal(a, "--dt", dt, error))
+    return usageError(error);
+  if (exportEvery && !a.value("--export-state"))
+    return usageError("--export-every needs --export-state FILE");
+
+  Runtime runtime;
+  Scene scene(runtime);
+  scene.setThreadCount(static_cast<int>(threads));
+  std::unique_ptr<std::ofstream> jsonFile;
+  if (int code = loadScene(a, runtime, scene, jsonFile)) return code;
+  if (dt <= 0) dt = scene.root().dt();
+
+  std::ofstream stateFile;
+  if (const std::string* path = a.value("--export-state")) {
+    stateFile.open(*path);
+    if (!stateFile) return usageError("cannot write the state file '" + *path + "'");
+    writeStateHeader(stateFile);
+    if (exportEvery) writeSnapshot(stateFile, captureState(scene.root(), 0));
+  }
+
+  int code = kSuccess;
+  long long done = 0;
+  for (; done < steps; ++done) {
+    if (!scene.step(dt)) {
+      std::cerr << "stroma: the simulation failed at step " << done + 1 << " (time "
+                << scene.root().time() << " s); see the errors above\n";
+      code = kSimulationFailure;
+      ++done;
+      break;
+    }
+    if (exportEvery && (done + 1) % exportEvery == 0 && done + 1 != steps)
+      writeSnapshot(stateFile, captureState(scene.root(), done + 1));
+  }
+  if (stateFile.is_open()) {
+    writeSnapshot(stateFile, captureState(scene.root(), done));
+    if (!stateFile.flush()) {
+      std::cerr << "stroma: writing the state file failed\n";
+      code = code ? code : kSimulationFailure;
+    }
+  }
+  printTimingSummary(scene, scene.timing(), done, dt);
+  return code;
+}
+
+int checkCommand(const std::vector<std::string>& args) {
+  Arguments a;
+  std::string error;
+  if (!parseArguments(args, kSceneOptions, {"--verbose"}, a, error)) return usageError(error);
+  Runtime runtime;
+  Scene scene(runtime);
+  std::unique_ptr<std::ofstream> jsonFile;
+  if (int code = loadScene(a, runtime, scene, jsonFile)) return code;
+  std::size_t objects = 0, nodes = 0;
+  std::vector<const Node*> stack{&scene.root()};
+  while (!stack.empty()) {
+    const Node* n = stack.back();
+    stack.pop_back();
+    ++nodes;
+    objects += n->objects().size();
+    for (const auto& c : n->children()) stack.push_back(c.get());
+  }
+  const std::size_t warnings = scene.log().count(MessageLevel::warning);
+  std::cout << scene.file().string() << ": OK (" << nodes << " nodes, " << objects
+            << " components, " << warnings << (warnings == 1 ? " warning" : " warnings")
+            << "; plugins loaded:";
+  for (const auto& p : runtime.plugins().loadedPlugins()) std::cout << ' ' << p;
+  std::cout << ")\n";
+  return kSuccess;
+}
+
+}  // namespace stroma::cli

@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+#include "core/ObjectFactory.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "core/NameSuggestions.h"
+
+namespace stroma {
+
+std::vector<std::string> ComponentClass::templateNames() const {
+  std::vector<std::string> names;
+  for (const auto& v : variants)
+    if (!v.templateName.empty()) names.push_back(v.templateName);
+  return names;
+}
+
+std::string normalizeTemplateName(std::string_view name) {
+  std::string n(name);
+  if (n.size() >= 4 && n.compare(0, 3, "Vec") == 0) {
+    const char last = n.back();
+    if (last == 'f') n.back() = 'd';
+    else if (last != 'd') n += 'd';  // "Vec3" -> "Vec3d"
+    return n;
+  }
+  if (n == "Rigid" || n == "Rigid3" || n == "Rigid3f" || n == "Rigid3d") return "Rigid3d";
+  if (n == "Rigid2" || n == "Rigid2f" || n == "Rigid2d") return "Rigid2d";
+  if (n.size() > 1 && n.back() == 'f' && n.rfind("CompressedRowSparseMatrix", 0) == 0)
+    n.back() = 'd';
+  return n;
+}
+
+ComponentRegistration& ComponentRegistration::addCreator(std::string templateName,
+                                                         Creator create) {
+  ComponentClass* c = m_factory.findMutable(m_name);
+  std::string normalized = templateName.empty() ? std::string() : normalizeTemplateName(templateName);
+  for (const auto& v : c->variants)
+    if (v.templateName == normalized)
+      throw std::logic_error("component " + m_name + " registered twice with template '" +
+                             normalized + "'");
+  c->variants.push_back({std::move(normalized), std::move(create)});
+  return *this;
+}
+
+ComponentRegistration& ComponentRegistration::alias(std::string name) {
+  ComponentClass* c = m_factory.findMutable(m_name);
+  c->aliases.push_back(name);
+  m_factory.m_aliases[std::move(name)] = m_name;
+  return *this;
+}
+
+ComponentRegistration ObjectFactory::add(std::string name, std::string description,
+                                         std::string plugin) {
+  ComponentClass& c = m_classes[name];
+  if (!c.name.empty() && c.plugin != plugin)
+    throw std::logic_error("component " + name + " is provided by two plugins: " + c.plugin +
+                           " and " + plugin);
+  c.name = name;
+  c.description = std::move(description);
+  c.plugin = std::move(plugin);
+  return ComponentRegistration(*this, std::move(name));
+}
+
+ComponentClass* ObjectFactory::findMutable(std::string_view name) {
+  auto it = m_classes.find(name);
+  return it == m_classes.end() ? nullptr : &it->second;
+}
+
+const ComponentClass* ObjectFactory::find(std::string_view nameOrAlias) const {
+  if (auto it = m_classes.find(nameOrAlias); it != m_classes.end()) return &it->second;
+  if (auto it = m_aliases.find(nameOrAlias); it != m_aliases.end()) {
+    auto c = m_classes.find(it->second);
+    if (c != m_classes.end()) return &c->second;
+  }
+  return nullptr;
+}
+
+std::vector<const ComponentClass*> ObjectFactory::classes() const {
+  std::vector<const ComponentClass*> result;
+  for (const auto& [name, c] : m_classes) result.push_back(&c);
+  return result;
+}
+
+std::vector<std::string> ObjectFactory::allNames() const {
+  std::vector<std::string> names;
+  for (const auto& [name, c] : m_classes) names.push_back(name);
+  for (const auto& [alias, target] : m_aliases) names.push_back(alias);
+  return names;
+}
+
+std::unique_ptr<Base> ObjectFactory::create(std::string_view nameOrAlias,
+                                            std::string_view templateName,
+                                            std::string_view contextTemplate,
+                                            std::string& error) const {
+  const ComponentClass* c = find(nameOrAlias);
+  if (!c) {
+    error = "unknown component '" + std::string(nameOrAlias) + "'";
+    const auto near = nearestNames(std::string(nameOrAlias), allNames());
+    if (!near.empty()) error += "; did you mean " + quotedList(near) + "?";
+    return nullptr;
+  }
+  if (c->variants.empty()) {
+    error = "component '" + c->name + "' has no creator";
+    return nullptr;
+  }
+  const ComponentClass::Variant* chosen = &c->variants.front();
+  if (c->isTemplated()) {
+    const std::string wanted = normalizeTemplateName(templateName);
+    const std::string context = normalizeTemplateName(contextTemplate);
+    const ComponentClass::Variant* byContext = nullptr;
+    const ComponentClass::Variant* byScene = nullptr;
+    for (const auto& v : c->variants) {
+      if (!wanted.empty() && v.templateName == wanted) byScene = &v;
+      if (!context.empty() && v.templateName == context) byContext = &v;
+    }
+    if (!wanted.empty() && !byScene) {
+      error = "component '" + c->name + "' has no template '" + std::string(templateName) +
+              "'; available: " + quotedList(c->templateNames());
+      return nullptr;
+    }
+    chosen = byScene ? byScene : byContext ? byContext : chosen;
+  }
+  std::unique_ptr<Base> object = chosen->create();
+  object->setClassName(c->name, chosen->templateName);
+  return object;
+}
+
+}  // namespace stroma

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+#include "simulation/Scene.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "core/Runtime.h"
+#include "simulation/AnimationLoop.h"
+#include "simulation/SceneLoader.h"
+#include "simulation/SceneXml.h"
+#include "simulation/Visitor.h"
+
+namespace stroma {
+
+namespace fs = std::filesystem;
+
+Scene::Scene(Runtime& runtime) : m_runtime(runtime) {}
+
+Scene::~Scene() { unload(); }
+
+namespace {
+class CleanupVisitor final : public Visitor {
+ public:
+  void processNodeBottomUp(Node& node) override {
+    for (const auto& o : node.objects()) o->cleanup();
+  }
+  std::string_view name() const override { return "cleanup"; }
+};
+}  // namespace
+
+void Scene::unload() {
+  if (m_root && m_loaded) {
+    CleanupVisitor cleanup;
+    traverse(*m_root, cleanup);
+  }
+  m_root.reset();
+  m_loaded = false;
+  m_steps = 0;
+}
+
+bool Scene::loadFile(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    Message m;
+    m.level = MessageLevel::error;
+    m.text = "cannot open scene file '" + file.string() + "'";
+    m.where.file = file.string();
+    m_log.add(std::move(m));
+    return false;
+  }
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return load(buffer.str(), file);
+}
+
+bool Scene::loadString(std::string_view xml, const fs::path& fileName) {
+  return load(xml, fileName);
+}
+
+bool Scene::load(std::string_view xml, const fs::path& file) {
+  unload();
+  m_file = file;
+  ScopedPhase phase(m_timing, "load");
+  const std::size_t errorsBefore = m_log.errorCount();
+  SceneElement root;
+  auto resolveInclude = [this](const std::string& href, const fs::path& from) {
+    return m_runtime.findFile(href, {from, m_file.parent_path()});
+  };
+  if (!parseSceneXml(xml, file, resolveInclude, m_log, root)) return false;
+  const bool built = buildSceneGraph(m_runtime, root, file, m_log, m_root);
+  if (m_root) m_root->setMessageLog(&m_log);
+  m_loaded = built && m_log.errorCount() == errorsBefore;
+  return m_loaded;
+}
+
+bool Scene::step(double dt) {
+  if (!m_loaded) return false;
+  if (dt <= 0) dt = m_root->dt();
+  const std::size_t errorsBefore = m_log.errorCount();
+  {
+    ScopedPhase phase(m_timing, "step");
+    if (AnimationLoop* loop = m_root->get<AnimationLoop>()) loop->step(*m_root, dt, m_timing);
+    else animateDefault(*m_root, dt, m_timing);
+  }
+  ++m_steps;
+  return m_log.errorCount() == errorsBefore;
+}
+
+}  // namespace stroma

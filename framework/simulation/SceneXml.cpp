@@ -1,0 +1,183 @@
+// SPDX-License-Identifier: MIT
+#include "simulation/SceneXml.h"
+
+#include <tinyxml2.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+namespace stroma {
+
+namespace fs = std::filesystem;
+
+const std::string* SceneElement::attribute(std::string_view name) const {
+  for (const auto& a : attributes)
+    if (a.name == name) return &a.value;
+  return nullptr;
+}
+
+namespace {
+
+constexpr int kMaxIncludeDepth = 32;
+
+struct Parser {
+  const IncludeResolver& resolveInclude;
+  MessageLog& log;
+  std::vector<fs::path> includeStack;
+  bool ok = true;
+
+  void error(const SourceLocation& where, std::string text) {
+    Message m;
+    m.level = MessageLevel::error;
+    m.text = std::move(text);
+    m.where = where;
+    log.add(std::move(m));
+    ok = false;
+  }
+
+  bool parseDocument(std::string_view text, const fs::path& file, SceneElement& root) {
+    tinyxml2::XMLDocument doc;
+    if (doc.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
+      std::string what = doc.ErrorStr() ? doc.ErrorStr() : "unknown error";
+      error({file.string(), doc.ErrorLineNum()}, "malformed XML: " + what);
+      return false;
+    }
+    const tinyxml2::XMLElement* top = doc.RootElement();
+    if (!top) {
+      error({file.string(), 1}, "the document has no root element");
+      return false;
+    }
+    includeStack.push_back(file);
+    const bool converted = convert(*top, file, root);
+    includeStack.pop_back();
+    return converted;
+  }
+
+  bool convert(const tinyxml2::XMLElement& xml, const fs::path& file, SceneElement& out) {
+    out.tag = xml.Name();
+    out.where = {file.string(), xml.GetLineNum()};
+    for (const tinyxml2::XMLAttribute* a = xml.FirstAttribute(); a; a = a->Next())
+      out.attributes.push_back({a->Name(), a->Value()});
+    if (out.tag == "Object") {  // SOFA's older syntax: <Object type="Class" .../>
+      auto type = std::find_if(out.attributes.begin(), out.attributes.end(),
+                               [](const auto& a) { return a.name == "type"; });
+      if (type == out.attributes.end()) {
+        error(out.where, "an <Object> element needs a 'type' attribute naming its class");
+        return false;
+      }
+      out.tag = type->value;
+      out.attributes.erase(type);
+    }
+    for (const tinyxml2::XMLElement* c = xml.FirstChildElement(); c; c = c->NextSiblingElement()) {
+      const std::string tag = c->Name();
+      if (tag == "include") {
+        if (!expandInclude(*c, file, out.children)) return false;
+      } else if (tag == "Attribute") {
+        convertAttributeElement(*c, file, out);
+      } else {
+        SceneElement child;
+        if (!convert(*c, file, child)) return false;
+        out.children.push_back(std::move(child));
+      }
+    }
+    return true;
+  }
+
+  // <Attribute type="name"><Data value="v"/></Attribute>
+  void convertAttributeElement(const tinyxml2::XMLElement& xml, const fs::path& file,
+                               SceneElement& out) {
+    const SourceLocation where{file.string(), xml.GetLineNum()};
+    const char* type = xml.Attribute("type");
+    const tinyxml2::XMLElement* data = xml.FirstChildElement("Data");
+    const char* value = data ? data->Attribute("value") : nullptr;
+    if (!type || !value) {
+      error(where, "an <Attribute> element needs type=\"field\" and a <Data value=\"...\"/> child");
+      return;
+    }
+    out.attributes.push_back({type, value});
+  }
+
+  bool expandInclude(const tinyxml2::XMLElement& xml, const fs::path& file,
+                     std::vector<SceneElement>& into) {
+    const SourceLocation where{file.string(), xml.GetLineNum()};
+    const char* href = xml.Attribute("href");
+    if (!href || !*href) {
+      error(where, "<include> needs an href attribute naming the fragment file");
+      return false;
+    }
+    const fs::path target = resolveInclude(href, file.parent_path());
+    if (target.empty()) {
+      error(where, std::string("included file '") + href + "' not found");
+      return false;
+    }
+    if (includeStack.size() >= kMaxIncludeDepth ||
+        std::find(includeStack.begin(), includeStack.end(), target) != includeStack.end()) {
+      error(where, "include cycle: '" + target.string() + "' includes itself");
+      return false;
+    }
+    std::ifstream in(target, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    if (!in) {
+      error(where, "cannot read included file '" + target.string() + "'");
+      return false;
+    }
+    SceneElement fragment;
+    if (!parseDocument(buffer.str(), target, fragment)) return false;
+
+    std::vector<SceneElement> elements;
+    if (fragment.tag == "Node") elements = std::move(fragment.children);
+    else elements.push_back(std::move(fragment));
+
+    for (const tinyxml2::XMLAttribute* a = xml.FirstAttribute(); a; a = a->Next()) {
+      const std::string name = a->Name();
+      if (name == "href") continue;
+      const auto dot = name.find('.');
+      if (dot != std::string::npos) {
+        const std::string object = name.substr(0, dot), field = name.substr(dot + 1);
+        bool found = false;
+        for (auto& e : elements) found |= setOnNamed(e, object, field, a->Value());
+        if (!found)
+          error(where, "<include> sets '" + name + "' but the fragment has no element named '" +
+                           object + "'");
+      } else {
+        for (auto& e : elements) replaceEverywhere(e, name, a->Value());
+      }
+    }
+    for (auto& e : elements) into.push_back(std::move(e));
+    return true;
+  }
+
+  static bool setOnNamed(SceneElement& e, const std::string& object, const std::string& field,
+                         const char* value) {
+    bool found = false;
+    const std::string* name = e.attribute("name");
+    if (name && *name == object) {
+      auto it = std::find_if(e.attributes.begin(), e.attributes.end(),
+                             [&](const auto& a) { return a.name == field; });
+      if (it != e.attributes.end()) it->value = value;
+      else e.attributes.push_back({field, value});
+      found = true;
+    }
+    for (auto& c : e.children) found |= setOnNamed(c, object, field, value);
+    return found;
+  }
+
+  static void replaceEverywhere(SceneElement& e, const std::string& field, const char* value) {
+    for (auto& a : e.attributes)
+      if (a.name == field) a.value = value;
+    for (auto& c : e.children) replaceEverywhere(c, field, value);
+  }
+};
+
+}  // namespace
+
+bool parseSceneXml(std::string_view text, const fs::path& file,
+                   const IncludeResolver& resolveInclude, MessageLog& log, SceneElement& root) {
+  Parser parser{resolveInclude, log, {}, true};
+  const bool parsed = parser.parseDocument(text, file, root);
+  return parsed && parser.ok;
+}
+
+}  // namespace stroma

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <vector>
+
+#include "core/BaseState.h"
+#include "core/StateTypes.h"
+
+namespace stroma {
+
+/// The state vectors of a set of points (Vec3d) or rigid frames (Rigid3d), SOFA's attributes.
+template <class DataTypes>
+class MechanicalObject final : public BaseState {
+ public:
+  using Coord = typename DataTypes::Coord;
+  using Deriv = typename DataTypes::Deriv;
+  using VecCoord = std::vector<Coord>;
+  using VecDeriv = std::vector<Deriv>;
+
+  Data<VecCoord> d_position{this, "position", {}, "Positions (size x coordinates).",
+                            {.unit = "m"}};
+  Data<VecDeriv> d_velocity{this, "velocity", {}, "Velocities (size x derivatives).",
+                            {.unit = "m/s"}};
+  Data<VecDeriv> d_force{this, "force", {}, "Forces accumulated during a step.", {.unit = "N"}};
+  Data<VecDeriv> d_externalForce{this, "externalForce", {}, "Forces applied from outside.",
+                                 {.unit = "N"}};
+  Data<VecDeriv> d_derivX{this, "derivX", {}, "Position increment (dx) of the last solve.",
+                          {.unit = "m"}};
+  Data<VecCoord> d_restPosition{this, "rest_position", {},
+                                "Rest positions; the initial positions when not given.",
+                                {.unit = "m"}};
+  Data<VecCoord> d_freePosition{this, "free_position", {}, "Free-motion positions.", {.unit = "m"}};
+  Data<VecDeriv> d_freeVelocity{this, "free_velocity", {}, "Free-motion velocities.",
+                                {.unit = "m/s"}};
+  Data<VecCoord> d_resetPosition{this, "reset_position", {},
+                                 "Positions restored by a reset; the initial ones when not given.",
+                                 {.unit = "m"}};
+  Data<int> d_size{this, "size", 0,
+                   "Number of degrees of freedom when no position is given (set at the origin).",
+                   {.min = 0.0}};
+  Data<Vec3d> d_translation{this, "translation", Vec3d::Zero(),
+                            "Translation applied to the initial positions.", {.unit = "m"}};
+  Data<Vec3d> d_rotation{this, "rotation", Vec3d::Zero(),
+                         "Rotation of the initial positions, about x then y then z.",
+                         {.unit = "deg"}};
+  Data<Vec3d> d_scale3d{this, "scale3d", Vec3d::Ones(), "Scale of the initial positions."};
+  Data<double> d_scale{this, "scale", 1.0, "Uniform scale of the initial positions."};
+  Data<double> d_dx{this, "dx", 0.0, "Translation along x (added to translation).", {.unit = "m"}};
+  Data<double> d_dy{this, "dy", 0.0, "Translation along y (added to translation).", {.unit = "m"}};
+  Data<double> d_dz{this, "dz", 0.0, "Translation along z (added to translation).", {.unit = "m"}};
+  Data<double> d_rx{this, "rx", 0.0, "Rotation about x (added to rotation).", {.unit = "deg"}};
+  Data<double> d_ry{this, "ry", 0.0, "Rotation about y (added to rotation).", {.unit = "deg"}};
+  Data<double> d_rz{this, "rz", 0.0, "Rotation about z (added to rotation).", {.unit = "deg"}};
+  Data<double> d_restScale{this, "restScale", 1.0, "Scale of the rest positions."};
+  Data<bool> d_useMask{this, "useMask", false, "SOFA option, accepted and without effect."};
+  Data<std::vector<double>> d_bbox{this, "bbox", {}, "Bounding box (viewers only)."};
+  Data<bool> d_showObject{this, "showObject", false, "Draw the points (viewers only)."};
+  Data<double> d_showObjectScale{this, "showObjectScale", 1.0, "Point size (viewers only)."};
+  Data<bool> d_showIndices{this, "showIndices", false, "Draw indices (viewers only)."};
+  Data<double> d_showIndicesScale{this, "showIndicesScale", 1.0, "Index size (viewers only)."};
+  Data<int> d_drawMode{this, "drawMode", 0, "Point drawing mode (viewers only)."};
+  Data<std::vector<double>> d_showColor{this, "showColor", {}, "Point color (viewers only)."};
+
+  std::size_t size() const override { return d_position.value().size(); }
+  int coordDimension() const override { return DataTypes::coordSize; }
+  int derivDimension() const override { return DataTypes::derivSize; }
+  void copyPositions(std::vector<double>& out) const override;
+  void copyVelocities(std::vector<double>& out) const override;
+
+  void init() override;
+};
+
+}  // namespace stroma

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: MIT
+// Visual-only components: Data declarations that a viewer would read; nothing runs in batch.
+#pragma once
+
+#include "core/Types.h"
+#include "simulation/VisualModel.h"
+
+namespace stroma {
+
+class OglModel final : public VisualModel {
+ public:
+  Data<FileName> d_filename{this, "filename", {}, "Mesh file to draw (OBJ)."};
+  Data<std::vector<Vec3d>> d_position{this, "position", {}, "Vertex positions.", {.unit = "m"}};
+  Data<std::vector<Vec3d>> d_restPosition{this, "restPosition", {}, "Rest vertex positions."};
+  Data<std::vector<Vec3d>> d_normals{this, "normals", {}, "Vertex normals."};
+  Data<std::vector<Vec2d>> d_texcoords{this, "texcoords", {}, "Texture coordinates."};
+  Data<std::vector<Vec2i>> d_edges{this, "edges", {}, "Edges (vertex index pairs)."};
+  Data<std::vector<Vec3i>> d_triangles{this, "triangles", {}, "Triangles (vertex index triples)."};
+  Data<std::vector<Eigen::Matrix<int, 4, 1>>> d_quads{this, "quads", {}, "Quads (index quadruples)."};
+  Data<std::string> d_vertices{this, "vertices", "", "SOFA vertex buffer (accepted, unused)."};
+  Data<std::string> d_color{this, "color", "", "Color: a name ('red') or 'r g b a'."};
+  Data<std::string> d_material{this, "material", "", "Material description (SOFA syntax)."};
+  Data<FileName> d_texturename{this, "texturename", {}, "Texture image file."};
+  Data<Vec3d> d_translation{this, "translation", Vec3d::Zero(), "Translation.", {.unit = "m"}};
+  Data<Vec3d> d_rotation{this, "rotation", Vec3d::Zero(), "Rotation about x, y, z.", {.unit = "deg"}};
+  Data<Vec3d> d_scale3d{this, "scale3d", Vec3d::Ones(), "Scale."};
+  Data<double> d_scale{this, "scale", 1.0, "Uniform scale."};
+  Data<double> d_dx{this, "dx", 0.0, "Translation along x.", {.unit = "m"}};
+  Data<double> d_dy{this, "dy", 0.0, "Translation along y.", {.unit = "m"}};
+  Data<double> d_dz{this, "dz", 0.0, "Translation along z.", {.unit = "m"}};
+  Data<double> d_rx{this, "rx", 0.0, "Rotation about x.", {.unit = "deg"}};
+  Data<double> d_ry{this, "ry", 0.0, "Rotation about y.", {.unit = "deg"}};
+  Data<double> d_rz{this, "rz", 0.0, "Rotation about z.", {.unit = "deg"}};
+  Data<Vec2d> d_scaleTex{this, "scaleTex", Vec2d::Ones(), "Texture coordinate scale."};
+  Data<bool> d_putOnlyTexCoords{this, "putOnlyTexCoords", false, "SOFA drawing option."};
+  Data<bool> d_useNormals{this, "useNormals", true, "Use the given normals."};
+  Data<Vec3d> d_normal{this, "normal", Vec3d::Zero(), "SOFA drawing option."};
+  Data<bool> d_alphaBlend{this, "alphaBlend", false, "Blend with alpha."};
+  Data<std::string> d_sfactor{this, "sfactor", "GL_SRC_ALPHA", "OpenGL source blend factor."};
+  Data<std::string> d_dfactor{this, "dfactor", "GL_ONE_MINUS_SRC_ALPHA", "OpenGL destination blend factor."};
+  Data<std::string> d_blendEquation{this, "blendEquation", "GL_FUNC_ADD", "OpenGL blend equation."};
+  Data<std::string> d_primitiveType{this, "primitiveType", "DEFAULT", "OpenGL primitive type."};
+  Data<double> d_lineWidth{this, "lineWidth", 1.0, "Line width (pixels)."};
+  Data<bool> d_handleDynamicTopology{this, "handleDynamicTopology", true, "Follow topology changes."};
+};
+
+class VisualStyle final : public VisualModel {
+ public:
+  Data<std::string> d_displayFlags{this, "displayFlags", "showVisual",
+                                   "What a viewer shows (SOFA's words: showVisualModels, "
+                                   "showBehaviorModels, showForceFields, showWireFrame, ...)."};
+};
+
+class BackgroundSetting final : public VisualModel {
+ public:
+  Data<std::string> d_color{this, "color", "", "Background color 'r g b a'."};
+  Data<FileName> d_image{this, "image", {}, "Background image file."};
+};
+
+class VisualGrid final : public VisualModel {
+ public:
+  Data<double> d_size{this, "size", 10.0, "Grid size.", {.unit = "m"}};
+  Data<int> d_nbSubdiv{this, "nbSubdiv", 16, "Subdivisions."};
+  Data<std::string> d_plane{this, "plane", "z", "Plane: x, y or z."};
+  Data<std::string> d_color{this, "color", "", "Line color."};
+  Data<double> d_thickness{this, "thickness", 1.0, "Line thickness (pixels)."};
+};
+
+class LineAxis final : public VisualModel {
+ public:
+  Data<double> d_size{this, "size", 10.0, "Axis length.", {.unit = "m"}};
+  Data<std::string> d_axis{this, "axis", "xyz", "Axes drawn."};
+  Data<double> d_thickness{this, "thickness", 1.0, "Line thickness (pixels)."};
+};
+
+class OglSceneFrame final : public VisualModel {
+ public:
+  Data<std::string> d_style{this, "style", "Cylinders", "Frame style."};
+  Data<std::string> d_alignment{this, "alignment", "BottomRight", "Frame position on screen."};
+  Data<bool> d_draw{this, "draw", true, "Draw the frame."};
+};
+
+class InteractiveCamera final : public VisualModel {
+ public:
+  Data<Vec3d> d_position{this, "position", Vec3d(0, 0, 1), "Camera position.", {.unit = "m"}};
+  Data<Quat> d_orientation{this, "orientation", Quat::Identity(), "Camera orientation (x y z w)."};
+  Data<Vec3d> d_lookAt{this, "lookAt", Vec3d::Zero(), "Point looked at.", {.unit = "m"}};
+  Data<double> d_distance{this, "distance", 1.0, "Distance to the point looked at.", {.unit = "m"}};
+  Data<double> d_fieldOfView{this, "fieldOfView", 45.0, "Field of view.", {.unit = "deg"}};
+  Data<double> d_zNear{this, "zNear", 0.01, "Near clipping distance."};
+  Data<double> d_zFar{this, "zFar", 100.0, "Far clipping distance."};
+  Data<Vec3d> d_minBBox{this, "minBBox", Vec3d::Zero(), "Lower corner of the viewed box."};
+  Data<Vec3d> d_maxBBox{this, "maxBBox", Vec3d::Ones(), "Upper corner of the viewed box."};
+  Data<int> d_widthViewport{this, "widthViewport", 800, "Viewport width (pixels)."};
+  Data<int> d_heightViewport{this, "heightViewport", 600, "Viewport height (pixels)."};
+  Data<double> d_zoomSpeed{this, "zoomSpeed", 250.0, "Zoom speed."};
+  Data<double> d_panSpeed{this, "panSpeed", 0.1, "Pan speed."};
+  Data<int> d_pivot{this, "pivot", 0, "Rotation pivot."};
+  Data<bool> d_fixedLookAt{this, "fixedLookAt", false, "Keep the look-at point fixed."};
+};
+
+class LightManager final : public VisualModel {
+ public:
+  Data<bool> d_shadows{this, "shadows", false, "Shadows."};
+  Data<bool> d_softShadows{this, "softShadows", false, "Soft shadows."};
+  Data<std::string> d_ambient{this, "ambient", "", "Ambient color 'r g b a'."};
+};
+
+/// SpotLight, DirectionalLight and PositionalLight share their Data; the class name says which.
+class Light final : public VisualModel {
+ public:
+  Data<std::string> d_color{this, "color", "", "Light color 'r g b'."};
+  Data<Vec3d> d_position{this, "position", Vec3d::Zero(), "Position.", {.unit = "m"}};
+  Data<Vec3d> d_direction{this, "direction", Vec3d(0, 0, -1), "Direction."};
+  Data<double> d_cutoff{this, "cutoff", 30.0, "Spot cut-off angle.", {.unit = "deg"}};
+  Data<double> d_exponent{this, "exponent", 20.0, "Spot exponent."};
+  Data<double> d_attenuation{this, "attenuation", 0.0, "Attenuation."};
+  Data<bool> d_drawSource{this, "drawSource", false, "Draw the light source."};
+  Data<int> d_shadowTextureSize{this, "shadowTextureSize", 0, "Shadow map size (pixels)."};
+  Data<double> d_shadowFactor{this, "shadowFactor", 1.0, "Shadow darkness."};
+};
+
+class DefaultVisualManagerLoop final : public VisualModel {};
+
+}  // namespace stroma

@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# The main job: install what is missing, build, and run the bundled default scene.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./scripts/build.sh
+exec build/bin/stroma run scenes/default.scn "$@"
