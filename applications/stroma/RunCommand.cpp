@@ -45,8 +45,9 @@ void printTimingSummary(const Scene& scene, const Timing& timing, long long step
   const double stepSeconds = timing.seconds("step");
   std::printf("Ran %lld steps of %s (dt %g s, simulated time %g s)\n", steps,
               scene.file().string().c_str(), dt, scene.root().time());
-  std::printf("  wall time %.6f s, %.1f steps/s\n", stepSeconds,
-              stepSeconds > 0 ? static_cast<double>(steps) / stepSeconds : 0.0);
+  std::printf("  wall time %.6f s for the steps (%.1f steps/s), %.6f s to load and initialize\n",
+              stepSeconds, stepSeconds > 0 ? static_cast<double>(steps) / stepSeconds : 0.0,
+              timing.seconds("load+init"));
   std::printf("  %-24s %12s %10s %14s\n", "phase", "total (s)", "calls", "per call (ms)");
   for (const auto& p : timing.phases())
     std::printf("  %-24s %12.6f %10lld %14.4f\n", p.name.c_str(), p.seconds, p.calls,

@@ -60,7 +60,7 @@ bool Scene::loadString(std::string_view xml, const fs::path& fileName) {
 bool Scene::load(std::string_view xml, const fs::path& file) {
   unload();
   m_file = file;
-  ScopedPhase phase(m_timing, "load");
+  ScopedPhase phase(m_timing, "load+init");
   const std::size_t errorsBefore = m_log.errorCount();
   SceneElement root;
   auto resolveInclude = [this](const std::string& href, const fs::path& from) {

@@ -88,6 +88,7 @@ class GraphBuilder {
     std::unique_ptr<Base> object =
         m_runtime.create(e.tag, templ ? *templ : std::string(), contextTemplate, why);
     if (!object) {
+      m_failedNames.push_back(displayName);
       error(e.where, childPath(node, displayName), e.tag, templ && why.find("template") !=
                                                                      std::string::npos
                                                              ? "template"
@@ -203,7 +204,7 @@ class GraphBuilder {
       }
       if (!parent)
         error(object.sourceLocation(), object.path(), object.className(), data->name(),
-              "broken link '" + data->linkText() + "': " + why);
+              brokenLinkText(data->linkText(), why));
     }
     for (BaseLink* link : object.links()) {
       if (link->path().empty()) continue;
@@ -211,7 +212,7 @@ class GraphBuilder {
       Base* target = resolveObjectPath(context, link->path(), why);
       if (!target || !link->setTarget(target, why))
         error(object.sourceLocation(), object.path(), object.className(), link->name(),
-              "broken link '" + link->path() + "': " + why);
+              brokenLinkText(link->path(), why));
     }
   }
 
@@ -223,7 +224,7 @@ class GraphBuilder {
       const Base* source = resolveObjectPath(*s.object->node(), s.path, why);
       if (!source) {
         error(s.object->sourceLocation(), s.object->path(), s.object->className(), "src",
-              "broken link '" + s.path + "': " + why);
+              brokenLinkText(s.path, why));
         continue;
       }
       for (BaseData* field : source->dataFields()) {
@@ -238,7 +239,24 @@ class GraphBuilder {
     }
   }
 
+  // A link to an object that could not be created is a consequence, not a second problem.
+  std::string brokenLinkText(const std::string& path, const std::string& why) const {
+    std::string target = path;
+    if (const auto dot = target.rfind('.'); dot != std::string::npos &&
+                                            target.find('/', dot) == std::string::npos &&
+                                            dot > 0 && target[dot - 1] != '.')
+      target.erase(dot);
+    const auto slash = target.find_last_of("/@");
+    const std::string last = slash == std::string::npos ? target : target.substr(slash + 1);
+    for (const auto& failed : m_failedNames)
+      if (failed == last)
+        return "link '" + path + "' names '" + last +
+               "', a component that could not be created (see its error)";
+    return "broken link '" + path + "': " + why;
+  }
+
   Runtime& m_runtime;
+  std::vector<std::string> m_failedNames;
   fs::path m_sceneDir;
   MessageLog& m_log;
   std::vector<PendingSource> m_sources;
