@@ -257,8 +257,8 @@ struct DataTraits<std::vector<T>> {
           return (error = "expected an integer or a range 'a-b', got '" + std::string(token) +
                           "'"),
                  false;
-        if (last < first || static_cast<long long>(last) - first > 100000000)
-          return (error = "bad range '" + std::string(token) + "'"), false;
+        if (last < first || static_cast<long long>(last) - first > 10000000)
+          return (error = "bad range '" + std::string(token) + "' (expected a <= b and at most 10^7 values)"), false;
         for (T i = first; i <= last; ++i) result.push_back(i);
       }
     } else {

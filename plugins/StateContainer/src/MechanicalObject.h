@@ -37,7 +37,7 @@ class MechanicalObject final : public BaseState {
                                  {.unit = "m"}};
   Data<int> d_size{this, "size", 0,
                    "Number of degrees of freedom when no position is given (set at the origin).",
-                   {.min = 0.0}};
+                   {.min = 0.0, .max = 1e7}};
   Data<Vec3d> d_translation{this, "translation", Vec3d::Zero(),
                             "Translation applied to the initial positions.", {.unit = "m"}};
   Data<Vec3d> d_rotation{this, "rotation", Vec3d::Zero(),
