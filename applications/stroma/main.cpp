@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "CommandLine.h"
+#include "core/NameSuggestions.h"
 #include "core/Runtime.h"
 
 namespace {
@@ -66,5 +67,9 @@ int main(int argc, char** argv) {
     std::cerr << "stroma: internal error: " << e.what() << '\n';
     return kSimulationFailure;
   }
-  return usageError("unknown command '" + command + "'");
+  std::string text = "unknown command '" + command + "'";
+  const auto near = stroma::nearestNames(
+      command, {"run", "check", "list", "doc", "plugin-index", "--help", "--version"});
+  if (!near.empty()) text += "; did you mean " + stroma::quotedList(near) + "?";
+  return usageError(text);
 }

@@ -72,7 +72,7 @@ struct Parser {
     for (const tinyxml2::XMLElement* c = xml.FirstChildElement(); c; c = c->NextSiblingElement()) {
       const std::string tag = c->Name();
       if (tag == "include") {
-        if (!expandInclude(*c, file, out.children)) return false;
+        if (!expandInclude(*c, file, out)) return false;
       } else if (tag == "Attribute") {
         convertAttributeElement(*c, file, out);
       } else {
@@ -98,8 +98,7 @@ struct Parser {
     out.attributes.push_back({type, value});
   }
 
-  bool expandInclude(const tinyxml2::XMLElement& xml, const fs::path& file,
-                     std::vector<SceneElement>& into) {
+  bool expandInclude(const tinyxml2::XMLElement& xml, const fs::path& file, SceneElement& into) {
     const SourceLocation where{file.string(), xml.GetLineNum()};
     const char* href = xml.Attribute("href");
     if (!href || !*href) {
@@ -126,27 +125,66 @@ struct Parser {
     SceneElement fragment;
     if (!parseDocument(buffer.str(), target, fragment)) return false;
 
-    std::vector<SceneElement> elements;
-    if (fragment.tag == "Node") elements = std::move(fragment.children);
-    else elements.push_back(std::move(fragment));
-
+    // As SOFA does: `name` renames the fragment's root; `obj.attr` (SOFA: `obj__attr`) sets
+    // attr on the elements named obj; a plain attr replaces it wherever the fragment has it.
     for (const tinyxml2::XMLAttribute* a = xml.FirstAttribute(); a; a = a->Next()) {
       const std::string name = a->Name();
       if (name == "href") continue;
-      const auto dot = name.find('.');
+      if (name == "name") {
+        setAttribute(fragment, name, a->Value());
+        continue;
+      }
+      const std::size_t underscores = name.find("__");
+      const bool named = underscores != std::string::npos;
+      const std::size_t dot = named ? underscores : name.find('.');
       if (dot != std::string::npos) {
-        const std::string object = name.substr(0, dot), field = name.substr(dot + 1);
-        bool found = false;
-        for (auto& e : elements) found |= setOnNamed(e, object, field, a->Value());
-        if (!found)
+        const std::string object = name.substr(0, dot);
+        const std::string field = name.substr(dot + (named ? 2 : 1));
+        if (!setOnNamed(fragment, object, field, a->Value()))
           error(where, "<include> sets '" + name + "' but the fragment has no element named '" +
                            object + "'");
       } else {
-        for (auto& e : elements) replaceEverywhere(e, name, a->Value());
+        replaceEverywhere(fragment, name, a->Value());
       }
     }
-    for (auto& e : elements) into.push_back(std::move(e));
+
+    // A root Node named Group (or _Group_) stands for its children, one named _Merge_ merges
+    // into the including node; any other root element is included as it is.
+    const std::string* rootName = fragment.attribute("name");
+    const bool isNode = fragment.tag == "Node" || fragment.tag == "node";
+    if (isNode && rootName && (*rootName == "Group" || *rootName == "_Group_")) {
+      for (auto& e : fragment.children) into.children.push_back(std::move(e));
+    } else if (isNode && rootName && *rootName == "_Merge_") {
+      merge(into, std::move(fragment));
+    } else {
+      into.children.push_back(std::move(fragment));
+    }
     return true;
+  }
+
+  static void setAttribute(SceneElement& e, const std::string& name, const std::string& value) {
+    for (auto& a : e.attributes)
+      if (a.name == name) {
+        a.value = value;
+        return;
+      }
+    e.attributes.push_back({name, value});
+  }
+
+  // SOFA's _Merge_: the source's attributes but its name go to `into`; each child merges with
+  // the child of the same tag and name, or is appended.
+  static void merge(SceneElement& into, SceneElement&& source) {
+    for (const auto& a : source.attributes)
+      if (a.name != "name") setAttribute(into, a.name, a.value);
+    for (auto& child : source.children) {
+      const std::string* name = child.attribute("name");
+      auto same = std::find_if(into.children.begin(), into.children.end(), [&](const auto& c) {
+        const std::string* other = c.attribute("name");
+        return name && other && *name == *other && c.tag == child.tag;
+      });
+      if (same != into.children.end()) merge(*same, std::move(child));
+      else into.children.push_back(std::move(child));
+    }
   }
 
   static bool setOnNamed(SceneElement& e, const std::string& object, const std::string& field,

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+// Every scene shipped in scenes/ loads and steps without an error. Scenes are found at run
+// time, so a new scene is tested as soon as it is added; files under a fragments/ folder are
+// pieces for <include>, not scenes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "core/Runtime.h"
+#include "plugins/TestPlugin/TestSupport.h"
+#include "simulation/Scene.h"
+
+namespace stroma::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<fs::path> bundledScenes() {
+  std::vector<fs::path> scenes;
+  const fs::path root = fs::path(STROMA_SOURCE_DIR) / "scenes";
+  for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator();
+       ++it) {
+    if (it->is_directory() && it->path().filename() == "fragments") {
+      it.disable_recursion_pending();
+      continue;
+    }
+    const std::string extension = it->path().extension().string();
+    if (it->is_regular_file() && (extension == ".scn" || extension == ".xml"))
+      scenes.push_back(it->path());
+  }
+  std::sort(scenes.begin(), scenes.end());
+  return scenes;
+}
+
+TEST(BundledScenes, EverySceneLoadsAndStepsWithoutError) {
+  const std::vector<fs::path> scenes = bundledScenes();
+  ASSERT_FALSE(scenes.empty()) << "no scene found under " << STROMA_SOURCE_DIR << "/scenes";
+  constexpr int kSteps = 10;
+  int passed = 0;
+  for (const fs::path& file : scenes) {
+    SCOPED_TRACE(file.string());
+    Runtime runtime;
+    Scene scene(runtime);
+    if (!scene.loadFile(file)) {
+      ADD_FAILURE() << "does not load:\n" << describe(scene.log());
+      continue;
+    }
+    bool stepped = true;
+    for (int i = 0; i < kSteps && stepped; ++i) stepped = scene.step();
+    EXPECT_TRUE(stepped) << describe(scene.log());
+    EXPECT_EQ(scene.log().errorCount(), 0u) << describe(scene.log());
+    EXPECT_EQ(scene.stepCount(), kSteps);
+    passed += stepped && scene.log().errorCount() == 0;
+  }
+  std::printf("[ bundled  ] %d of %zu scenes loaded and ran %d steps\n", passed, scenes.size(),
+              kSteps);
+}
+
+TEST(BundledScenes, FragmentsAreNotScenes) {
+  for (const fs::path& file : bundledScenes())
+    for (const auto& part : file) EXPECT_NE(part, "fragments") << file;
+}
+
+}  // namespace
+}  // namespace stroma::test
