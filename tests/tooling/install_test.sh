@@ -1,0 +1,110 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Install test: installs the main build into a fresh prefix, builds the out-of-tree plugin of
+# external_plugin/ against it with find_package(Stroma), then checks that the INSTALLED stroma
+# lists and runs the plugin's component (found through STROMA_PLUGIN_PATH) and finds its own
+# built-in plugins and libraries in the install prefix, not in the build tree.
+#
+# Usage: install_test.sh MAIN_BUILD_DIR WORK_DIR   (ctest passes both; WORK_DIR is wiped)
+set -euo pipefail
+
+build_dir=$(cd "$1" && pwd)
+work=$2
+here=$(cd "$(dirname "$0")" && pwd)
+cmake=${CMAKE_COMMAND:-cmake}
+
+fail() {
+  echo "install_test: FAIL: $*" >&2
+  exit 1
+}
+# Runs a command, saving its stdout+stderr in $work/<name>.log; fails when the exit code differs
+# from the expected one.
+expect() {
+  local name=$1 code=$2
+  shift 2
+  local rc=0
+  "$@" >"$work/$name.log" 2>&1 || rc=$?
+  if [ "$rc" -ne "$code" ]; then
+    cat "$work/$name.log" >&2
+    fail "$name: exit code $rc, expected $code (command: $*)"
+  fi
+}
+expect_output() {
+  local name=$1 pattern=$2
+  grep -Eq -- "$pattern" "$work/$name.log" || {
+    cat "$work/$name.log" >&2
+    fail "$name: output lacks /$pattern/"
+  }
+}
+
+rm -rf "$work"
+mkdir -p "$work"
+prefix=$work/install
+unset STROMA_PLUGIN_PATH STROMA_DATA_PATH
+
+# 1. Install.
+expect install 0 "$cmake" --install "$build_dir" --prefix "$prefix"
+[ -x "$prefix/bin/stroma" ] || fail "no bin/stroma in the install"
+[ -f "$prefix/lib/cmake/Stroma/StromaConfig.cmake" ] || fail "no package config in the install"
+ls "$prefix"/lib/stroma/plugins/*.stroma-plugin >/dev/null 2>&1 || fail "no installed plugin index"
+
+# 2. Build the external plugin against the install only.
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+generator=()
+command -v ninja >/dev/null && generator=(-G Ninja)
+expect configure 0 "$cmake" -S "$here/external_plugin" -B "$work/external" "${generator[@]}" \
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
+  "${launcher[@]}"
+expect build 0 "$cmake" --build "$work/external"
+# The plugin compiles with the framework's -march (Eigen's alignment is part of the plugin ABI).
+march=$(grep -o -m1 -- '-march=[^ "]*' "$build_dir/compile_commands.json" || true)
+if [ -n "$march" ] && ! grep -q -- "$march" "$work/external/compile_commands.json"; then
+  fail "the external plugin does not compile with the framework's $march"
+fi
+plugins=$work/external/plugins
+[ -f "$plugins/libExternalDemo.so" ] || fail "stroma_add_plugin put no libExternalDemo.so in $plugins"
+[ -f "$plugins/ExternalDemo.stroma-plugin" ] || fail "no ExternalDemo.stroma-plugin index in $plugins"
+grep -q '^component ExternalDemoComponent$' "$plugins/ExternalDemo.stroma-plugin" ||
+  fail "the index does not list ExternalDemoComponent"
+
+stroma=$prefix/bin/stroma
+scene=$here/external_plugin/ExternalDemo.scn
+
+# 3. The installed stroma lists the external component beside the built-in ones.
+expect list 0 env STROMA_PLUGIN_PATH="$plugins" "$stroma" list
+expect_output list '^ExternalDemo$'
+expect_output list '^  ExternalDemoComponent: '
+expect_output list '^  MechanicalObject'
+expect list_plugin 0 env STROMA_PLUGIN_PATH="$plugins" "$stroma" list --plugin ExternalDemo
+expect_output list_plugin '^  ExternalDemoComponent: '
+
+# 4. ... and loads a scene that uses it, creating and initializing the component.
+expect check 0 env STROMA_PLUGIN_PATH="$plugins" "$stroma" check "$scene" --verbose
+expect_output check 'external component initialized with stiffness 250'
+expect run 0 env STROMA_PLUGIN_PATH="$plugins" "$stroma" run "$scene" -n 3
+expect doc_external 0 env STROMA_PLUGIN_PATH="$plugins" "$stroma" doc ExternalDemoComponent
+expect_output doc_external 'plugin: ExternalDemo'
+expect_output doc_external 'stiffness +\(.*unit N/m'
+
+# 5. Without the plugin path the component is unknown: bad input (2), not a crash.
+expect check_no_path 2 "$stroma" check "$scene"
+expect_output check_no_path "ExternalDemoComponent"
+# A value outside the Data's declared range is reported with the field.
+sed 's/stiffness="250"/stiffness="-1"/' "$scene" >"$work/bad.scn"
+expect check_bad_value 2 env STROMA_PLUGIN_PATH="$plugins" "$stroma" check "$work/bad.scn"
+expect_output check_bad_value "stiffness"
+
+# 6. The installed stroma uses the installed library and built-in plugins (the build tree is
+# only a fallback of the search path). LD_DEBUG=files names every library the loader opens.
+expect doc_builtin 0 env LD_DEBUG=files "$stroma" doc MechanicalObject
+expect_output doc_builtin '^MechanicalObject'
+expect_output doc_builtin "file=$prefix/lib/stroma/plugins/libStateContainer\.so"
+expect_output doc_builtin "file=libStromaFramework\.so.*|file=$prefix/lib/libStromaFramework"
+if grep -q "file=$build_dir/lib/" "$work/doc_builtin.log"; then
+  fail "the installed stroma loaded a library from the build tree:" \
+    "$(grep "file=$build_dir/lib/" "$work/doc_builtin.log" | head -1)"
+fi
+expect check_default 0 "$stroma" check "$prefix/share/stroma/scenes/default.scn"
+
+echo "install_test: OK (prefix $prefix, plugin $plugins)"
