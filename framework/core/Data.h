@@ -198,6 +198,7 @@ class Data final : public BaseData {
   }
   bool copyFrom(const BaseData& other, std::string& error) override {
     if (auto* same = dynamic_cast<const Data<T>*>(&other)) {
+      if (!checkDataValue(same->m_value, options(), error)) return false;
       m_value = same->m_value;
       return true;
     }

@@ -110,7 +110,17 @@ struct ElementTraits<T> {
     v = static_cast<T>(d);
     return true;
   }
-  static void print(std::string& out, T v) { internal::printDouble(out, static_cast<double>(v)); }
+  static void print(std::string& out, T v) {
+    if constexpr (std::is_same_v<T, float>) {
+      // The shortest text that reads back to this float, not to the double it widens to.
+      if (std::isfinite(v)) {
+        char buffer[32];
+        out.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, v).ptr);
+        return;
+      }
+    }
+    internal::printDouble(out, static_cast<double>(v));
+  }
 };
 
 template <class S, int N>
@@ -259,7 +269,10 @@ struct DataTraits<std::vector<T>> {
                  false;
         if (last < first || static_cast<long long>(last) - first > 10000000)
           return (error = "bad range '" + std::string(token) + "' (expected a <= b and at most 10^7 values)"), false;
-        for (T i = first; i <= last; ++i) result.push_back(i);
+        for (T i = first;; ++i) {  // stops at `last` without overflowing past the type's max
+          result.push_back(i);
+          if (i == last) break;
+        }
       }
     } else {
       const std::size_t count = in.remaining();

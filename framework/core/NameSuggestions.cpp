@@ -42,7 +42,7 @@ std::vector<std::string> nearestNames(const std::string& name,
   const std::size_t limit = std::max<std::size_t>(2, key.size() / 3);
   for (const auto& candidate : candidates) {
     const std::string c = lowered(candidate);
-    if (c == key) continue;
+    if (candidate == name) continue;  // a name differing only by case is the best hint
     std::size_t d = editDistance(key, c);
     const bool related = key.size() >= 4 && (c.find(key) != std::string::npos ||
                                             (c.size() >= 4 && key.find(c) != std::string::npos));

@@ -30,9 +30,16 @@ std::vector<std::string> namesIn(const Node& node) {
   return names;
 }
 
-std::string notFound(std::string_view what, const Node& where) {
+// With `andAncestors`, the search went up from `where`: suggest the ancestors' names too.
+std::string notFound(std::string_view what, const Node& where, bool andAncestors = false) {
   std::string error = "no object or node named '" + std::string(what) + "' in " + where.path();
-  const auto near = nearestNames(std::string(what), namesIn(where));
+  if (andAncestors) error += " nor in its ancestors";
+  std::vector<std::string> names;
+  for (const Node* n = &where; n; n = andAncestors ? n->parent() : nullptr) {
+    auto here = namesIn(*n);
+    names.insert(names.end(), here.begin(), here.end());
+  }
+  const auto near = nearestNames(std::string(what), names);
   if (!near.empty()) error += "; did you mean " + quotedList(near) + "?";
   return error;
 }
@@ -67,7 +74,7 @@ Base* resolveObjectPath(const Node& from, std::string_view path, std::string& er
   if (!absolute && segments.size() == 1 && segments[0] != "." && segments[0] != "..") {
     for (const Node* n = &from; n; n = n->parent())
       if (Base* found = findHere(*n, segments[0])) return found;
-    error = notFound(segments[0], from) + " nor in its ancestors";
+    error = notFound(segments[0], from, true);
     return nullptr;
   }
   if (absolute && !segments.empty() && segments[0] == current->name() &&

@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <istream>
+#include <locale>
 #include <ostream>
 #include <sstream>
 
@@ -56,6 +57,8 @@ StateSnapshot captureState(const Node& root, long long step) {
 void writeStateHeader(std::ostream& out) { out << "# stroma-state 1\n"; }
 
 void writeSnapshot(std::ostream& out, const StateSnapshot& snapshot) {
+  // The format is the same whatever the stream's locale (no digit grouping in counts).
+  const std::locale previous = out.imbue(std::locale::classic());
   out << "snapshot time ";
   writeNumber(out, snapshot.time);
   out << " step " << snapshot.step << '\n';
@@ -77,6 +80,7 @@ void writeSnapshot(std::ostream& out, const StateSnapshot& snapshot) {
     }
   }
   out << "end\n";
+  out.imbue(previous);
 }
 
 bool readStateFile(std::istream& in, std::vector<StateSnapshot>& snapshots, std::string& error) {
@@ -92,6 +96,7 @@ bool readStateFile(std::istream& in, std::vector<StateSnapshot>& snapshots, std:
     ++lineNumber;
     if (line.empty() || line[0] == '#') continue;
     std::istringstream words(line);
+    words.imbue(std::locale::classic());
     std::string key;
     words >> key;
     if (key == "snapshot") {
@@ -116,6 +121,7 @@ bool readStateFile(std::istream& in, std::vector<StateSnapshot>& snapshots, std:
         if (!std::getline(in, line)) return fail("state " + r.path + " ends early");
         ++lineNumber;
         std::istringstream numbers(line);
+        numbers.imbue(std::locale::classic());
         for (int k = 0; k < r.coordDimension; ++k)
           if (!(numbers >> r.positions[i * r.coordDimension + k]))
             return fail("expected " + std::to_string(r.coordDimension + r.derivDimension) +
@@ -124,6 +130,9 @@ bool readStateFile(std::istream& in, std::vector<StateSnapshot>& snapshots, std:
           if (!(numbers >> r.velocities[i * r.derivDimension + k]))
             return fail("expected " + std::to_string(r.coordDimension + r.derivDimension) +
                         " numbers");
+        if (std::string extra; numbers >> extra)
+          return fail("expected " + std::to_string(r.coordDimension + r.derivDimension) +
+                      " numbers");
       }
       current->states.push_back(std::move(r));
     } else if (key == "end") {
