@@ -33,6 +33,7 @@ struct DataOptions {
   std::optional<double> max = {}; ///< inclusive upper bound on every number of the value
   bool allowNonFinite = false;    ///< NaN and infinities are refused unless this is true
   bool output = false;            ///< computed by the component (loaders, engines); linkable
+  bool mustExist = true;          ///< for a FileName: a missing file is an error (else a warning)
 };
 
 namespace internal {

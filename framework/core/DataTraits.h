@@ -145,6 +145,25 @@ struct ElementTraits<Eigen::Matrix<S, N, 1>> {
   }
 };
 
+template <class S, std::size_t N>
+  requires std::is_integral_v<S>
+struct ElementTraits<std::array<S, N>> {
+  using Value = std::array<S, N>;
+  static constexpr int tokens = static_cast<int>(N);
+  static std::string typeName() { return std::to_string(N) + " indices"; }
+  static bool parseTokens(TokenReader& in, Value& v, std::string& error) {
+    for (auto& x : v)
+      if (!ElementTraits<S>::parseTokens(in, x, error)) return false;
+    return true;
+  }
+  static void print(std::string& out, const Value& v) {
+    for (std::size_t i = 0; i < N; ++i) {
+      if (i) out += ' ';
+      ElementTraits<S>::print(out, v[i]);
+    }
+  }
+};
+
 template <>
 struct ElementTraits<Quat> {
   static constexpr int tokens = 4;

@@ -2,6 +2,7 @@
 #include "core/ObjectFactory.h"
 
 #include <algorithm>
+#include <cctype>
 #include <stdexcept>
 
 #include "core/NameSuggestions.h"
@@ -20,8 +21,8 @@ std::string normalizeTemplateName(std::string_view name) {
   if (n.size() >= 4 && n.compare(0, 3, "Vec") == 0) {
     const char last = n.back();
     if (last == 'f') n.back() = 'd';
-    else if (last != 'd') n += 'd';  // "Vec3" -> "Vec3d"
-    return n;
+    else if (std::isdigit(static_cast<unsigned char>(last))) n += 'd';  // "Vec3" -> "Vec3d"
+    return n;  // "Vec3d", "Vec3i" unchanged
   }
   if (n == "Rigid" || n == "Rigid3" || n == "Rigid3f" || n == "Rigid3d") return "Rigid3d";
   if (n == "Rigid2" || n == "Rigid2f" || n == "Rigid2d") return "Rigid2d";

@@ -39,8 +39,10 @@ void Scene::unload() {
 }
 
 bool Scene::loadFile(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
+  std::error_code ec;
+  std::ifstream in;
+  if (fs::is_regular_file(file, ec)) in.open(file, std::ios::binary);
+  if (!in.is_open()) {
     Message m;
     m.level = MessageLevel::error;
     m.text = "cannot open scene file '" + file.string() + "'";

@@ -39,8 +39,8 @@ class GraphBuilder {
       return nullptr;
     }
     auto node = std::make_unique<Node>();
+    node->setMessageLog(&m_log);  // before filling: components may report while being set
     fillNode(*node, root);
-    node->setMessageLog(&m_log);
     resolveLinks(*node);
     return node;
   }
@@ -179,9 +179,13 @@ class GraphBuilder {
     std::string searched;
     for (const auto& d : dirs) searched += (searched.empty() ? "" : ", ") + d.string();
     for (const auto& d : m_runtime.dataPath()) searched += ", " + d.string();
-    error(where, object.path(), object.className(), data.name(),
-          "file '" + name + "' not found (searched: " + searched +
-              "; add folders with --data-path or STROMA_DATA_PATH)");
+    const std::string text = "file '" + name + "' not found (searched: " + searched +
+                             "; add folders with --data-path or STROMA_DATA_PATH)";
+    if (!data.options().mustExist) {  // only a viewer would read it
+      object.msgWarning(text + "; not needed by a batch run", data.name());
+      return;
+    }
+    error(where, object.path(), object.className(), data.name(), text);
   }
 
   void resolveLinks(Node& node) {
@@ -265,7 +269,7 @@ class GraphBuilder {
 // init() top-down in scene order, then bwdInit() bottom-up.
 class InitVisitor final : public Visitor {
  public:
-  explicit InitVisitor(MessageLog& log) : m_log(log) {}
+  InitVisitor() = default;
   Result processNodeTopDown(Node& node) override {
     for (const auto& o : node.objects()) guarded(*o, [&] { o->init(); });
     return Result::carryOn;
@@ -284,7 +288,6 @@ class InitVisitor final : public Visitor {
       object.msgError(std::string("initialization failed: ") + e.what());
     }
   }
-  MessageLog& m_log;
 };
 
 }  // namespace
@@ -296,7 +299,7 @@ bool buildSceneGraph(Runtime& runtime, const SceneElement& root, const fs::path&
   graph = builder.build(root);
   if (!graph) return false;
   if (log.errorCount() != errorsBefore) return false;  // do not init a graph with bad input
-  InitVisitor init(log);
+  InitVisitor init;
   traverse(*graph, init);
   return log.errorCount() == errorsBefore;
 }

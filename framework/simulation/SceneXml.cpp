@@ -20,6 +20,7 @@ const std::string* SceneElement::attribute(std::string_view name) const {
 namespace {
 
 constexpr int kMaxIncludeDepth = 32;
+constexpr std::uintmax_t kMaxIncludeBytes = 64u << 20;  // scene fragments are small
 
 struct Parser {
   const IncludeResolver& resolveInclude;
@@ -46,6 +47,12 @@ struct Parser {
     const tinyxml2::XMLElement* top = doc.RootElement();
     if (!top) {
       error({file.string(), 1}, "the document has no root element");
+      return false;
+    }
+    if (const tinyxml2::XMLElement* extra = top->NextSiblingElement()) {
+      error({file.string(), extra->GetLineNum()},
+            std::string("a scene has one root element; <") + extra->Name() +
+                "> follows the root <" + top->Name() + ">: put it inside the root node");
       return false;
     }
     includeStack.push_back(file);
@@ -113,6 +120,15 @@ struct Parser {
     if (includeStack.size() >= kMaxIncludeDepth ||
         std::find(includeStack.begin(), includeStack.end(), target) != includeStack.end()) {
       error(where, "include cycle: '" + target.string() + "' includes itself");
+      return false;
+    }
+    std::error_code ec;
+    if (!fs::is_regular_file(target, ec)) {
+      error(where, "included '" + target.string() + "' is not a regular file");
+      return false;
+    }
+    if (fs::file_size(target, ec) > kMaxIncludeBytes) {
+      error(where, "included file '" + target.string() + "' is larger than 64 MiB");
       return false;
     }
     std::ifstream in(target, std::ios::binary);

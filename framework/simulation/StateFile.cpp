@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/BaseState.h"
+#include "core/DataTraits.h"
 #include "core/Node.h"
 #include "simulation/Visitor.h"
 
@@ -115,24 +116,21 @@ bool readStateFile(std::istream& in, std::vector<StateSnapshot>& snapshots, std:
           r.coordDimension < 0 || r.derivDimension < 0 || n > 100000000)
         return fail("expected 'state PATH TEMPLATE COUNT COORD_DIM DERIV_DIM'");
       if (r.templateName == "-") r.templateName.clear();
-      r.positions.resize(n * r.coordDimension);
-      r.velocities.resize(n * r.derivDimension);
+      // Rows are appended as read, so a corrupt count cannot allocate ahead of the data.
+      const std::string expected =
+          "expected " + std::to_string(r.coordDimension + r.derivDimension) + " numbers";
       for (std::size_t i = 0; i < n; ++i) {
         if (!std::getline(in, line)) return fail("state " + r.path + " ends early");
         ++lineNumber;
-        std::istringstream numbers(line);
-        numbers.imbue(std::locale::classic());
-        for (int k = 0; k < r.coordDimension; ++k)
-          if (!(numbers >> r.positions[i * r.coordDimension + k]))
-            return fail("expected " + std::to_string(r.coordDimension + r.derivDimension) +
-                        " numbers");
-        for (int k = 0; k < r.derivDimension; ++k)
-          if (!(numbers >> r.velocities[i * r.derivDimension + k]))
-            return fail("expected " + std::to_string(r.coordDimension + r.derivDimension) +
-                        " numbers");
-        if (std::string extra; numbers >> extra)
-          return fail("expected " + std::to_string(r.coordDimension + r.derivDimension) +
-                      " numbers");
+        TokenReader numbers(line);  // locale independent; reads nan and inf back
+        if (numbers.remaining() != static_cast<std::size_t>(r.coordDimension + r.derivDimension))
+          return fail(expected);
+        std::string why;
+        for (int k = 0; k < r.coordDimension + r.derivDimension; ++k) {
+          double value = 0;
+          if (!ElementTraits<double>::parseTokens(numbers, value, why)) return fail(expected);
+          (k < r.coordDimension ? r.positions : r.velocities).push_back(value);
+        }
       }
       current->states.push_back(std::move(r));
     } else if (key == "end") {

@@ -6,8 +6,8 @@
 //   # stroma-state 1
 //   snapshot time 0.01 step 1
 //   state /root/Particles/dofs Vec3d 2 3 3
-//   0 1 0 0 -0.0981 0
-//   1 1 0 0 -0.0981 0
+//   0 1 0 0 -0.098100000000000007 0
+//   1 1 0 0 -0.098100000000000007 0
 //   end
 //
 // Each state line gives: path, template, count n, numbers per position, numbers per velocity;

@@ -9,10 +9,12 @@ namespace stroma {
 
 class OglModel final : public VisualModel {
  public:
-  Data<FileName> d_filename{this, "filename", {}, "Mesh file to draw (OBJ)."};
+  Data<FileName> d_filename{this, "filename", {}, "Mesh file to draw (OBJ).", {.mustExist = false}};
   Data<std::vector<Vec3d>> d_position{this, "position", {}, "Vertex positions.", {.unit = "m"}};
   Data<std::vector<Vec3d>> d_restPosition{this, "restPosition", {}, "Rest vertex positions."};
-  Data<std::vector<Vec3d>> d_normals{this, "normals", {}, "Vertex normals."};
+  Data<std::vector<double>> d_normals{this, "normals", {},
+                                      "Vertex normals, flat 'x y z' list (SOFA scenes also "
+                                      "write a single 0 here for none)."};
   Data<std::vector<Vec2d>> d_texcoords{this, "texcoords", {}, "Texture coordinates."};
   Data<std::vector<Vec2i>> d_edges{this, "edges", {}, "Edges (vertex index pairs)."};
   Data<std::vector<Vec3i>> d_triangles{this, "triangles", {}, "Triangles (vertex index triples)."};
@@ -20,11 +22,13 @@ class OglModel final : public VisualModel {
   Data<std::string> d_vertices{this, "vertices", "", "SOFA vertex buffer (accepted, unused)."};
   Data<std::string> d_color{this, "color", "", "Color: a name ('red') or 'r g b a'."};
   Data<std::string> d_material{this, "material", "", "Material description (SOFA syntax)."};
-  Data<FileName> d_texturename{this, "texturename", {}, "Texture image file."};
+  Data<FileName> d_texturename{this, "texturename", {}, "Texture image file.",
+                               {.mustExist = false}};
   Data<Vec3d> d_translation{this, "translation", Vec3d::Zero(), "Translation.", {.unit = "m"}};
   Data<Vec3d> d_rotation{this, "rotation", Vec3d::Zero(), "Rotation about x, y, z.", {.unit = "deg"}};
   Data<Vec3d> d_scale3d{this, "scale3d", Vec3d::Ones(), "Scale."};
-  Data<double> d_scale{this, "scale", 1.0, "Uniform scale."};
+  Data<std::vector<double>> d_scale{this, "scale", {1.0},
+                                    "Scale: one number (uniform) or three (x y z)."};
   Data<double> d_dx{this, "dx", 0.0, "Translation along x.", {.unit = "m"}};
   Data<double> d_dy{this, "dy", 0.0, "Translation along y.", {.unit = "m"}};
   Data<double> d_dz{this, "dz", 0.0, "Translation along z.", {.unit = "m"}};
@@ -54,7 +58,7 @@ class VisualStyle final : public VisualModel {
 class BackgroundSetting final : public VisualModel {
  public:
   Data<std::string> d_color{this, "color", "", "Background color 'r g b a'."};
-  Data<FileName> d_image{this, "image", {}, "Background image file."};
+  Data<FileName> d_image{this, "image", {}, "Background image file.", {.mustExist = false}};
 };
 
 class VisualGrid final : public VisualModel {
@@ -97,6 +101,9 @@ class InteractiveCamera final : public VisualModel {
   Data<double> d_panSpeed{this, "panSpeed", 0.1, "Pan speed."};
   Data<int> d_pivot{this, "pivot", 0, "Rotation pivot."};
   Data<bool> d_fixedLookAt{this, "fixedLookAt", false, "Keep the look-at point fixed."};
+  Data<std::string> d_projectionType{this, "projectionType", "Perspective",
+                                     "Perspective or Orthographic."};
+  Data<bool> d_activated{this, "activated", true, "Whether this camera is the one used."};
 };
 
 class LightManager final : public VisualModel {

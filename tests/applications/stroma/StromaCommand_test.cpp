@@ -351,7 +351,7 @@ TEST(StromaCommand, DataPathOptionAndVariableAreSearched) {
   TempDir scenes, data;
   data.write("meshes/part.obj", "");
   const fs::path scene =
-      scenes.write("visual.scn", R"(<Node><OglModel filename="meshes/part.obj"/></Node>)");
+      scenes.write("visual.scn", R"(<Node><TestLoader filename="meshes/part.obj"/></Node>)");
   CommandResult r = runStroma({"check", scene.string()});
   EXPECT_EQ(r.exitCode, 2) << show(r);
   EXPECT_TRUE(has(r.err, "file 'meshes/part.obj' not found")) << show(r);

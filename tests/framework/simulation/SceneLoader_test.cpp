@@ -292,12 +292,20 @@ TEST_F(SceneLoaderTest, MissingFileListsTheFoldersSearched) {
   fs::create_directories(data);
   runtime.addDataDirectory(data);
   EXPECT_FALSE(load(R"(<Node name="root">
-  <OglModel name="visual" filename="nope.obj"/>
+  <TestLoader name="loader" filename="nope.obj"/>
 </Node>
 )"));
   const Message m = error({"file 'nope.obj' not found", "searched:", folder.path().string(),
                            data.string(), "--data-path"});
-  expectPlace(m, file, 2, "/root/visual", "OglModel", "filename");
+  expectPlace(m, file, 2, "/root/loader", "TestLoader", "filename");
+}
+
+TEST_F(SceneLoaderTest, MissingViewerOnlyFileIsAWarning) {
+  EXPECT_TRUE(load(R"(<Node name="root">
+  <OglModel name="visual" filename="nope.obj" texturename="nope.png"/>
+</Node>
+)")) << describe(scene.log());
+  EXPECT_EQ(scene.log().count(MessageLevel::warning), 2u) << describe(scene.log());
 }
 
 TEST_F(SceneLoaderTest, MissingIncludeNamesTheHref) {
@@ -348,7 +356,7 @@ TEST_F(SceneLoaderTest, EveryErrorOfTheSceneIsReported) {
   <TestCounter name="b" incremnet="1"/>
   <TestCounter name="c" increment="much"/>
   <TestCounter name="d" mstate="@nothing"/>
-  <OglModel name="e" filename="missing.obj"/>
+  <TestLoader name="e" filename="missing.obj"/>
   <TriangleCollisionModel name="f"/>
   <TestEngine name="g" input="@b.outptu"/>
   <TestInitCheck name="h" stiffness="-1"/>
@@ -462,9 +470,9 @@ TEST_F(SceneLoaderTest, RelativeFileNamesResolveInTheSceneFolderThenTheDataPath)
   const fs::path absolute = data.write("absolute.obj", "");
   runtime.addDataDirectory(data.path());
   const std::string xml = R"(<Node name="root">
-  <OglModel name="a" filename="meshes/a.obj"/>
-  <OglModel name="b" filename="meshes/b.obj"/>
-  <OglModel name="c" filename=")" +
+  <TestLoader name="a" filename="meshes/a.obj"/>
+  <TestLoader name="b" filename="meshes/b.obj"/>
+  <TestLoader name="c" filename=")" +
                           absolute.string() + R"("/>
 </Node>
 )";

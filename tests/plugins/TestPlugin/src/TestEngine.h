@@ -28,6 +28,7 @@ class TestLoader final : public Base, public DataEngine {
  public:
   Data<int> d_count{this, "count", 2, "Number of points made.", {.min = 0.0}};
   Data<double> d_spacing{this, "spacing", 1.0, "Distance between the points.", {.unit = "m"}};
+  Data<FileName> d_filename{this, "filename", {}, "A file that must exist (not read)."};
   Data<std::vector<Vec3d>> d_position{
       this, "position", {}, "Points made (count x 3).", {.unit = "m", .output = true}};
 
