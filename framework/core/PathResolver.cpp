@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "core/PathResolver.h"
 
+#include <charconv>
 #include <vector>
 
 #include "core/NameSuggestions.h"
@@ -58,7 +59,38 @@ bool isLinkText(std::string_view text) {
   return i + 1 < text.size() && text[i] == '@';
 }
 
-Base* resolveObjectPath(const Node& from, std::string_view path, std::string& error) {
+namespace {
+
+// "@[-k]": the k-th object before `owner` in its node.
+Base* resolveRelativeIndex(const Node& from, std::string_view path, const Base* owner,
+                           std::string& error) {
+  long long offset = 0;
+  const std::string_view digits = path.substr(1, path.size() - 2);
+  auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), offset);
+  if (ec != std::errc() || ptr != digits.data() + digits.size() || offset >= 0) {
+    error = "expected '@[-k]' (the k-th object before this one), got '@" + std::string(path) +
+            "'";
+    return nullptr;
+  }
+  const auto& objects = from.objects();
+  long long index = -1;
+  for (std::size_t i = 0; i < objects.size(); ++i)
+    if (objects[i].get() == owner) index = static_cast<long long>(i);
+  if (index < 0) {
+    error = "'@" + std::string(path) + "' is only meaningful for a component of " + from.path();
+    return nullptr;
+  }
+  if (index + offset < 0) {
+    error = "'@" + std::string(path) + "' goes before the first object of " + from.path();
+    return nullptr;
+  }
+  return objects[static_cast<std::size_t>(index + offset)].get();
+}
+
+}  // namespace
+
+Base* resolveObjectPath(const Node& from, std::string_view path, std::string& error,
+                        const Base* owner) {
   while (!path.empty() && (path.front() == ' ' || path.front() == '\t')) path.remove_prefix(1);
   while (!path.empty() && (path.back() == ' ' || path.back() == '\t')) path.remove_suffix(1);
   if (!path.empty() && path.front() == '@') path.remove_prefix(1);
@@ -66,6 +98,8 @@ Base* resolveObjectPath(const Node& from, std::string_view path, std::string& er
     error = "empty link path";
     return nullptr;
   }
+  if (path.front() == '[' && path.back() == ']')
+    return resolveRelativeIndex(from, path, owner, error);
   const bool absolute = path.front() == '/';
   auto segments = splitSegments(path);
   const Node* current = absolute ? &from.root() : &from;
@@ -113,7 +147,8 @@ Base* resolveObjectPath(const Node& from, std::string_view path, std::string& er
   return const_cast<Node*>(current);
 }
 
-BaseData* resolveDataPath(const Node& from, std::string_view path, std::string& error) {
+BaseData* resolveDataPath(const Node& from, std::string_view path, std::string& error,
+                          const Base* owner) {
   std::string_view text = path;
   while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
   const std::size_t slash = text.rfind('/');
@@ -132,7 +167,7 @@ BaseData* resolveDataPath(const Node& from, std::string_view path, std::string& 
             std::string(path) + "'";
     return nullptr;
   }
-  object = resolveObjectPath(from, objectPath, error);
+  object = resolveObjectPath(from, objectPath, error, owner);
   if (!object) return nullptr;
   if (BaseData* data = object->findData(field)) return data;
   std::vector<std::string> names;

@@ -202,7 +202,7 @@ class GraphBuilder {
     for (BaseData* data : object.dataFields()) {
       if (data->linkText().empty()) continue;
       std::string why;
-      BaseData* parent = resolveDataPath(context, data->linkText(), why);
+      BaseData* parent = resolveDataPath(context, data->linkText(), why, &object);
       if (parent) {
         if (!data->setParent(parent, why)) parent = nullptr;
       }
@@ -213,7 +213,7 @@ class GraphBuilder {
     for (BaseLink* link : object.links()) {
       if (link->path().empty()) continue;
       std::string why;
-      Base* target = resolveObjectPath(context, link->path(), why);
+      Base* target = resolveObjectPath(context, link->path(), why, &object);
       if (!target || !link->setTarget(target, why))
         error(object.sourceLocation(), object.path(), object.className(), link->name(),
               brokenLinkText(link->path(), why));
@@ -225,7 +225,7 @@ class GraphBuilder {
   void resolveSources() {
     for (const PendingSource& s : m_sources) {
       std::string why;
-      const Base* source = resolveObjectPath(*s.object->node(), s.path, why);
+      const Base* source = resolveObjectPath(*s.object->node(), s.path, why, s.object);
       if (!source) {
         error(s.object->sourceLocation(), s.object->path(), s.object->className(), "src",
               brokenLinkText(s.path, why));
@@ -252,6 +252,9 @@ class GraphBuilder {
       target.erase(dot);
     const auto slash = target.find_last_of("/@");
     const std::string last = slash == std::string::npos ? target : target.substr(slash + 1);
+    if (path.find("@[") != std::string::npos && !m_failedNames.empty())
+      return "link '" + path + "' counts objects back from this one, and an earlier component "
+             "could not be created (see its error)";
     for (const auto& failed : m_failedNames)
       if (failed == last)
         return "link '" + path + "' names '" + last +

@@ -225,3 +225,21 @@ TEST(IsLinkText, OnlyTextsStartingWithAnAtAndSomethingAfter) {
 
 }  // namespace
 }  // namespace stroma
+
+namespace stroma {
+namespace {
+
+TEST_F(PathResolverTest, RelativeIndexNamesAnEarlierObjectOfTheOwnersNode) {
+  EXPECT_EQ(resolveObjectPath(a, "@[-1]", error, spring), aDofs) << error;
+  BaseData* stiffness = resolveDataPath(a, "@[-1].stiffness", error, spring);
+  ASSERT_NE(stiffness, nullptr) << error;
+  EXPECT_EQ(stiffness->owner(), aDofs);
+  EXPECT_EQ(resolveObjectPath(a, "@[-2]", error, spring), nullptr);
+  EXPECT_NE(error.find("before the first object"), std::string::npos) << error;
+  EXPECT_EQ(resolveObjectPath(a, "@[1]", error, spring), nullptr);
+  EXPECT_NE(error.find("expected '@[-k]'"), std::string::npos) << error;
+  EXPECT_EQ(resolveObjectPath(a, "@[-1]", error), nullptr);  // no owner given
+}
+
+}  // namespace
+}  // namespace stroma
