@@ -2,6 +2,8 @@
 #include "simulation/AnimationLoop.h"
 
 #include "core/Node.h"
+#include "simulation/MechanicalOperations.h"
+#include "simulation/Solvers.h"
 #include "simulation/Timing.h"
 #include "simulation/Visitor.h"
 
@@ -22,12 +24,37 @@ class BehaviorUpdateVisitor final : public Visitor {
   double m_dt;
 };
 
+// Each node with an ODE solver integrates its subtree; sub-nodes with their own solver are
+// reached by the traversal and integrate theirs.
+class SolveVisitor final : public Visitor {
+ public:
+  SolveVisitor(double dt, Timing& timing) : m_dt(dt), m_timing(timing) {}
+  Result processNodeTopDown(Node& node) override {
+    for (OdeSolver* solver : node.getAll<OdeSolver>()) {
+      if (!solver->isValid()) continue;
+      MechanicalOperations mop(node, m_timing);
+      solver->solve(mop, m_dt);
+    }
+    return Result::carryOn;
+  }
+  std::string_view name() const override { return "solve"; }
+
+ private:
+  double m_dt;
+  Timing& m_timing;
+};
+
 }  // namespace
 
 void animateDefault(Node& root, double dt, Timing& timing) {
   {
     ScopedPhase phase(timing, "behaviorModels");
     BehaviorUpdateVisitor visitor(dt);
+    traverse(root, visitor);
+  }
+  {
+    ScopedPhase phase(timing, "solve");
+    SolveVisitor visitor(dt, timing);
     traverse(root, visitor);
   }
   root.setTime(root.time() + dt);

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace stroma {
 
@@ -98,6 +99,215 @@ void MechanicalObject<DataTypes>::copyVelocities(std::vector<double>& out) const
   out.clear();
   out.reserve(size() * DataTypes::derivSize);
   for (const Deriv& d : d_velocity.value()) flatten(d, out);
+}
+
+// Vector storage by id.
+template <class DataTypes>
+Data<typename MechanicalObject<DataTypes>::VecCoord>* MechanicalObject<DataTypes>::coordData(
+    int index) {
+  switch (index) {
+    case 0: return &d_position;
+    case 1: return &d_restPosition;
+    case 2: return &d_freePosition;
+    case 3: return &d_resetPosition;
+    default: return nullptr;
+  }
+}
+
+template <class DataTypes>
+Data<typename MechanicalObject<DataTypes>::VecDeriv>* MechanicalObject<DataTypes>::derivData(
+    int index) {
+  switch (index) {
+    case 0: return &d_velocity;
+    case 1: return &d_force;
+    case 2: return &d_derivX;
+    case 3: return &d_freeVelocity;
+    case 4: return &d_externalForce;
+    default: return nullptr;
+  }
+}
+
+namespace {
+template <class T>
+T& temporary(std::vector<std::unique_ptr<T>>& temps, int index, std::size_t n, bool create) {
+  const auto k = static_cast<std::size_t>(index - VecId::kFirstTemporary);
+  if (k >= temps.size()) temps.resize(k + 1);
+  if (!temps[k]) {
+    if (!create) throw std::logic_error("state vector " + std::to_string(index) + " not allocated");
+    temps[k] = std::make_unique<T>();
+  }
+  if (temps[k]->size() != n) temps[k]->resize(n);
+  return *temps[k];
+}
+}  // namespace
+
+template <class DataTypes>
+const typename MechanicalObject<DataTypes>::VecCoord& MechanicalObject<DataTypes>::readCoord(
+    VecId v) const {
+  return const_cast<MechanicalObject*>(this)->writeCoord(v);
+}
+
+template <class DataTypes>
+typename MechanicalObject<DataTypes>::VecCoord& MechanicalObject<DataTypes>::writeCoord(VecId v) {
+  if (Data<VecCoord>* d = coordData(v.index)) return d->edit();
+  return temporary(m_tempCoords, v.index, size(), false);
+}
+
+template <class DataTypes>
+const typename MechanicalObject<DataTypes>::VecDeriv& MechanicalObject<DataTypes>::readDeriv(
+    VecId v) const {
+  return const_cast<MechanicalObject*>(this)->writeDeriv(v);
+}
+
+template <class DataTypes>
+typename MechanicalObject<DataTypes>::VecDeriv& MechanicalObject<DataTypes>::writeDeriv(VecId v) {
+  if (Data<VecDeriv>* d = derivData(v.index)) {
+    VecDeriv& values = d->edit();
+    if (values.size() != size()) values.resize(size(), DataTypes::zeroDeriv());
+    return values;
+  }
+  return temporary(m_tempDerivs, v.index, size(), false);
+}
+
+template <class DataTypes>
+void MechanicalObject<DataTypes>::vAlloc(VecId v) {
+  if (v.isCoord() && !coordData(v.index)) {
+    VecCoord& c = temporary(m_tempCoords, v.index, size(), true);
+    std::fill(c.begin(), c.end(), DataTypes::zeroCoord());
+  } else if (v.isDeriv() && !derivData(v.index)) {
+    VecDeriv& d = temporary(m_tempDerivs, v.index, size(), true);
+    std::fill(d.begin(), d.end(), DataTypes::zeroDeriv());
+  }
+}
+
+template <class DataTypes>
+void MechanicalObject<DataTypes>::vFree(VecId) {
+  // Temporaries keep their storage for the next step (no allocation per step).
+}
+
+namespace {
+
+// Element operations. Vec3d: plain vectors. Rigid: center and orientation; an increment's
+// angular part is a rotation vector.
+void combine(Vec3d& out, const Vec3d* a, const Vec3d* b, double f) {
+  out = (a ? *a : Vec3d::Zero()) + (b ? Vec3d(*b * f) : Vec3d::Zero());
+}
+void combine(RigidDeriv3& out, const RigidDeriv3* a, const RigidDeriv3* b, double f) {
+  RigidDeriv3 r;
+  if (a) r = *a;
+  if (b) {
+    r.linear += b->linear * f;
+    r.angular += b->angular * f;
+  }
+  out = r;
+}
+void integrate(Vec3d& out, const Vec3d* a, const Vec3d* b, double f) { combine(out, a, b, f); }
+void integrate(RigidCoord3& out, const RigidCoord3* a, const RigidDeriv3* b, double f) {
+  RigidCoord3 r;
+  if (a) r = *a;
+  if (b) {
+    r.center += b->linear * f;
+    const Vec3d w = b->angular * f;
+    const double angle = w.norm();
+    if (angle > 0) r.orientation = (Quat(Eigen::AngleAxisd(angle, w / angle)) * r.orientation).normalized();
+  }
+  out = r;
+}
+// coord = a + b f with both coords: positions add; a rigid orientation is copied from a.
+void combineCoords(Vec3d& out, const Vec3d* a, const Vec3d* b, double f) { combine(out, a, b, f); }
+void combineCoords(RigidCoord3& out, const RigidCoord3* a, const RigidCoord3* b, double f) {
+  RigidCoord3 r;
+  if (a) r = *a;
+  if (b) r.center += b->center * f;
+  out = r;
+}
+double dotOf(const Vec3d& a, const Vec3d& b) { return a.dot(b); }
+double dotOf(const RigidDeriv3& a, const RigidDeriv3& b) {
+  return a.linear.dot(b.linear) + a.angular.dot(b.angular);
+}
+void toNumbers(const Vec3d& d, double* out) { std::copy(d.data(), d.data() + 3, out); }
+void toNumbers(const RigidDeriv3& d, double* out) {
+  std::copy(d.linear.data(), d.linear.data() + 3, out);
+  std::copy(d.angular.data(), d.angular.data() + 3, out + 3);
+}
+void fromNumbers(const double* in, Vec3d& d) { d = Vec3d(in[0], in[1], in[2]); }
+void fromNumbers(const double* in, RigidDeriv3& d) {
+  d.linear = Vec3d(in[0], in[1], in[2]);
+  d.angular = Vec3d(in[3], in[4], in[5]);
+}
+
+}  // namespace
+
+template <class DataTypes>
+void MechanicalObject<DataTypes>::vOp(VecId v, VecId a, VecId b, double f) {
+  const std::size_t n = size();
+  if (v.isDeriv()) {
+    VecDeriv& out = writeDeriv(v);
+    const VecDeriv* va = a.isNull() ? nullptr : &readDeriv(a);
+    const VecDeriv* vb = b.isNull() ? nullptr : &readDeriv(b);
+    for (std::size_t i = 0; i < n; ++i)
+      combine(out[i], va ? &(*va)[i] : nullptr, vb ? &(*vb)[i] : nullptr, f);
+    return;
+  }
+  VecCoord& out = writeCoord(v);
+  const VecCoord* va = a.isNull() ? nullptr : &readCoord(a);
+  if (b.isDeriv()) {
+    const VecDeriv& vb = readDeriv(b);
+    for (std::size_t i = 0; i < n; ++i) integrate(out[i], va ? &(*va)[i] : nullptr, &vb[i], f);
+  } else {
+    const VecCoord* vb = b.isNull() ? nullptr : &readCoord(b);
+    for (std::size_t i = 0; i < n; ++i)
+      combineCoords(out[i], va ? &(*va)[i] : nullptr, vb ? &(*vb)[i] : nullptr, f);
+  }
+}
+
+template <class DataTypes>
+double MechanicalObject<DataTypes>::vDot(VecId a, VecId b) const {
+  const VecDeriv& va = readDeriv(a);
+  const VecDeriv& vb = readDeriv(b);
+  double sum = 0;
+  for (std::size_t i = 0; i < va.size(); ++i) sum += dotOf(va[i], vb[i]);
+  return sum;
+}
+
+template <class DataTypes>
+double MechanicalObject<DataTypes>::vMaxAbs(VecId a, std::size_t& where) const {
+  std::vector<double>& numbers = m_scratch;  // reused: no allocation per step
+  numbers.clear();
+  if (a.isCoord()) {
+    for (const Coord& c : readCoord(a)) flatten(c, numbers);
+  } else {
+    for (const Deriv& d : readDeriv(a)) flatten(d, numbers);
+  }
+  const std::size_t per = a.isCoord() ? DataTypes::coordSize : DataTypes::derivSize;
+  double worst = 0;
+  for (std::size_t k = 0; k < numbers.size(); ++k) {
+    if (!std::isfinite(numbers[k])) {
+      where = k / per;
+      return numbers[k];
+    }
+    if (std::abs(numbers[k]) > worst) {
+      worst = std::abs(numbers[k]);
+      where = k / per;
+    }
+  }
+  return worst;
+}
+
+template <class DataTypes>
+void MechanicalObject<DataTypes>::copyToGlobal(VecId v, Eigen::Ref<Eigen::VectorXd> g,
+                                               std::size_t offset) const {
+  const VecDeriv& d = readDeriv(v);
+  for (std::size_t i = 0; i < d.size(); ++i)
+    toNumbers(d[i], g.data() + offset + i * DataTypes::derivSize);
+}
+
+template <class DataTypes>
+void MechanicalObject<DataTypes>::copyFromGlobal(VecId v, const Eigen::Ref<const Eigen::VectorXd>& g,
+                                                 std::size_t offset) {
+  VecDeriv& d = writeDeriv(v);
+  for (std::size_t i = 0; i < d.size(); ++i)
+    fromNumbers(g.data() + offset + i * DataTypes::derivSize, d[i]);
 }
 
 template class MechanicalObject<Vec3Types>;

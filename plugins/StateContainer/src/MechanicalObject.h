@@ -1,21 +1,24 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <memory>
 #include <vector>
 
-#include "core/BaseState.h"
 #include "core/StateTypes.h"
+#include "simulation/MechanicalState.h"
 
 namespace stroma {
 
 /// The state vectors of a set of points (Vec3d) or rigid frames (Rigid3d), SOFA's attributes.
 template <class DataTypes>
-class MechanicalObject final : public BaseState {
+class MechanicalObject final : public MechanicalState<DataTypes> {
  public:
   using Coord = typename DataTypes::Coord;
   using Deriv = typename DataTypes::Deriv;
   using VecCoord = std::vector<Coord>;
   using VecDeriv = std::vector<Deriv>;
+  using Base::msgError;
+  using Base::msgWarning;
 
   Data<VecCoord> d_position{this, "position", {}, "Positions (size x coordinates).",
                             {.unit = "m"}};
@@ -62,12 +65,33 @@ class MechanicalObject final : public BaseState {
   Data<std::vector<double>> d_showColor{this, "showColor", {}, "Point color (viewers only)."};
 
   std::size_t size() const override { return d_position.value().size(); }
-  int coordDimension() const override { return DataTypes::coordSize; }
-  int derivDimension() const override { return DataTypes::derivSize; }
   void copyPositions(std::vector<double>& out) const override;
   void copyVelocities(std::vector<double>& out) const override;
 
   void init() override;
+
+  // State vectors by id (MechanicalState).
+  const VecCoord& readCoord(VecId v) const override;
+  VecCoord& writeCoord(VecId v) override;
+  const VecDeriv& readDeriv(VecId v) const override;
+  VecDeriv& writeDeriv(VecId v) override;
+  void vAlloc(VecId v) override;
+  void vFree(VecId v) override;
+  void vOp(VecId v, VecId a, VecId b, double f) override;
+  double vDot(VecId a, VecId b) const override;
+  double vMaxAbs(VecId a, std::size_t& where) const override;
+  void copyToGlobal(VecId v, Eigen::Ref<Eigen::VectorXd> g, std::size_t offset) const override;
+  void copyFromGlobal(VecId v, const Eigen::Ref<const Eigen::VectorXd>& g,
+                      std::size_t offset) override;
+
+ private:
+  Data<VecCoord>* coordData(int index);
+  Data<VecDeriv>* derivData(int index);
+  // Temporaries of solvers, by id - VecId::kFirstTemporary. Kept between steps (capacity
+  // reused), so that a step allocates nothing after the first.
+  mutable std::vector<std::unique_ptr<VecCoord>> m_tempCoords;
+  mutable std::vector<std::unique_ptr<VecDeriv>> m_tempDerivs;
+  mutable std::vector<double> m_scratch;
 };
 
 }  // namespace stroma

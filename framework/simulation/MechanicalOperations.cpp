@@ -1,0 +1,273 @@
+// SPDX-License-Identifier: MIT
+#include "simulation/MechanicalOperations.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/Node.h"
+#include "simulation/ForceField.h"
+#include "simulation/Mapping.h"
+#include "simulation/Mass.h"
+#include "simulation/ProjectiveConstraint.h"
+#include "simulation/Solvers.h"
+#include "simulation/Timing.h"
+
+namespace stroma {
+
+MechanicalOperations::MechanicalOperations(Node& solverNode, Timing& timing)
+    : m_node(solverNode), m_timing(timing) {
+  collect(solverNode, true);
+  for (BaseMechanicalState* s : m_states) {
+    const bool mapped = std::any_of(m_mappings.begin(), m_mappings.end(),
+                                    [&](const BaseMapping* m) { return m->toState() == s; });
+    if (mapped) continue;
+    m_independent.push_back(s);
+    m_offsets.push_back(m_systemSize);
+    m_systemSize += s->matrixSize();
+  }
+}
+
+MechanicalOperations::~MechanicalOperations() {
+  for (VecId v : m_temporaries)
+    for (BaseMechanicalState* s : m_states) s->vFree(v);
+}
+
+// The subtree of the solver node, minus sub-nodes that have their own ODE solver.
+void MechanicalOperations::collect(Node& node, bool isSolverNode) {
+  if (!node.d_activated.value()) return;
+  if (!isSolverNode && node.get<OdeSolver>()) return;
+  for (const auto& object : node.objects()) {
+    Base* o = object.get();
+    if (!o->isValid()) continue;
+    if (auto* s = dynamic_cast<BaseMechanicalState*>(o)) m_states.push_back(s);
+    if (auto* f = dynamic_cast<BaseForceField*>(o)) m_forceFields.push_back(f);
+    if (auto* m = dynamic_cast<BaseMass*>(o)) m_masses.push_back(m);
+    if (auto* c = dynamic_cast<BaseProjectiveConstraint*>(o)) m_constraints.push_back(c);
+    if (auto* m = dynamic_cast<BaseMapping*>(o); m && m->toState() && m->fromState())
+      m_mappings.push_back(m);
+  }
+  for (const auto& child : node.children()) collect(*child, false);
+}
+
+double MechanicalOperations::time() const { return m_node.time(); }
+
+VecId MechanicalOperations::allocDeriv() {
+  const VecId v = VecId::deriv(m_nextDeriv++);
+  for (BaseMechanicalState* s : m_states) s->vAlloc(v);
+  m_temporaries.push_back(v);
+  return v;
+}
+
+VecId MechanicalOperations::allocCoord() {
+  const VecId v = VecId::coord(m_nextCoord++);
+  for (BaseMechanicalState* s : m_states) s->vAlloc(v);
+  m_temporaries.push_back(v);
+  return v;
+}
+
+void MechanicalOperations::freeVec(VecId v) {
+  for (BaseMechanicalState* s : m_states) s->vFree(v);
+  m_temporaries.erase(std::remove(m_temporaries.begin(), m_temporaries.end(), v),
+                      m_temporaries.end());
+}
+
+void MechanicalOperations::vOp(VecId v, VecId a, VecId b, double f) {
+  for (BaseMechanicalState* s : m_independent) s->vOp(v, a, b, f);
+}
+
+double MechanicalOperations::dot(VecId a, VecId b) const {
+  double sum = 0;
+  for (const BaseMechanicalState* s : m_independent) sum += s->vDot(a, b);
+  return sum;
+}
+
+double MechanicalOperations::norm(VecId a) const { return std::sqrt(dot(a, a)); }
+
+void MechanicalOperations::clearOnAll(VecId v) {
+  for (BaseMechanicalState* s : m_states) s->vOp(v, VecId::null(), VecId::null(), 0.0);
+}
+
+void MechanicalOperations::computeForce(const MechanicalParams& mp, VecId f) {
+  ScopedPhase phase(m_timing, "computeForce");
+  clearOnAll(f);
+  for (BaseForceField* ff : m_forceFields) ff->accumulateForce(mp, f);
+  for (auto it = m_mappings.rbegin(); it != m_mappings.rend(); ++it) (*it)->applyTransposed(f, f);
+}
+
+void MechanicalOperations::propagateDx(VecId dx) {
+  for (BaseMapping* m : m_mappings) m->applyVelocities(dx, dx);
+}
+
+void MechanicalOperations::computeMBKdx(const MechanicalParams& mp, VecId out, VecId dx) {
+  ScopedPhase phase(m_timing, "computeMBKdx");
+  propagateDx(dx);
+  clearOnAll(out);
+  if (mp.kFactor != 0 || mp.bFactor != 0)
+    for (BaseForceField* ff : m_forceFields) ff->accumulateDForce(mp, out, dx);
+  if (mp.mFactor != 0)
+    for (BaseMass* m : m_masses) m->accumulateMDx(out, dx, mp.mFactor);
+  for (auto it = m_mappings.rbegin(); it != m_mappings.rend(); ++it)
+    (*it)->applyTransposed(out, out);
+}
+
+bool MechanicalOperations::accFromF(VecId a, VecId f) {
+  for (BaseMechanicalState* s : m_independent) {
+    BaseMass* mass = nullptr;
+    for (BaseMass* m : m_masses) {
+      const auto states = m->states();
+      if (std::find(states.begin(), states.end(), s) != states.end()) mass = m;
+    }
+    if (!mass || !mass->isDiagonal()) {
+      s->msgError(mass ? "explicit integration needs a lumped (diagonal) mass; " +
+                             mass->className() + " is not one"
+                       : "has no mass: add UniformMass, DiagonalMass or MeshMatrixMass");
+      return false;
+    }
+    mass->accumulateAccFromF(a, f);
+  }
+  return true;
+}
+
+void MechanicalOperations::projectResponse(VecId dx) {
+  for (BaseProjectiveConstraint* c : m_constraints) c->constrainResponse(dx);
+}
+
+void MechanicalOperations::projectPosition(VecId x) {
+  for (BaseProjectiveConstraint* c : m_constraints) c->constrainPosition(x, time());
+}
+
+void MechanicalOperations::projectVelocity(VecId v) {
+  for (BaseProjectiveConstraint* c : m_constraints) c->constrainVelocity(v, time());
+}
+
+void MechanicalOperations::propagate(VecId x, VecId v) {
+  ScopedPhase phase(m_timing, "mappings");
+  for (BaseMapping* m : m_mappings) {
+    m->applyPositions(x, x);
+    m->applyVelocities(v, v);
+  }
+}
+
+void MechanicalOperations::fixedGlobalRows(std::vector<char>& fixed) const {
+  fixed.assign(m_systemSize, 0);
+  std::vector<std::size_t> rows;
+  for (const BaseProjectiveConstraint* c : m_constraints) {
+    const auto it = std::find(m_independent.begin(), m_independent.end(), c->state());
+    if (it == m_independent.end()) continue;
+    const std::size_t offset = m_offsets[static_cast<std::size_t>(it - m_independent.begin())];
+    rows.clear();
+    c->fixedRows(rows);
+    for (std::size_t r : rows)
+      if (offset + r < m_systemSize) fixed[offset + r] = 1;
+  }
+}
+
+Eigen::SparseMatrix<double> MechanicalOperations::totalJacobian(const BaseMechanicalState* state) {
+  const auto n = static_cast<Eigen::Index>(m_systemSize);
+  const auto it = std::find(m_independent.begin(), m_independent.end(), state);
+  if (it != m_independent.end()) {
+    const std::size_t offset = m_offsets[static_cast<std::size_t>(it - m_independent.begin())];
+    const auto rows = static_cast<Eigen::Index>(state->matrixSize());
+    Eigen::SparseMatrix<double> selection(rows, n);
+    std::vector<Eigen::Triplet<double>> ones;
+    for (Eigen::Index r = 0; r < rows; ++r)
+      ones.emplace_back(r, static_cast<Eigen::Index>(offset) + r, 1.0);
+    selection.setFromTriplets(ones.begin(), ones.end());
+    return selection;
+  }
+  for (BaseMapping* m : m_mappings)
+    if (m->toState() == state) return m->jacobian() * totalJacobian(m->fromState());
+  // A state mapped from outside this solver's system: it contributes nothing here.
+  return Eigen::SparseMatrix<double>(static_cast<Eigen::Index>(state->matrixSize()), n);
+}
+
+namespace {
+// Drops the entries of fixed rows and columns on their way into the matrix.
+class ProjectedAccumulator final : public MatrixAccumulator {
+ public:
+  ProjectedAccumulator(MatrixAccumulator& target, const std::vector<char>& fixed)
+      : m_target(target), m_fixed(fixed) {}
+  void add(std::size_t row, std::size_t col, double value) override {
+    if (!m_fixed[row] && !m_fixed[col]) m_target.add(row, col, value);
+  }
+
+ private:
+  MatrixAccumulator& m_target;
+  const std::vector<char>& m_fixed;
+};
+}  // namespace
+
+void MechanicalOperations::assemble(const MechanicalParams& mp, AssembledMatrix& A) {
+  ScopedPhase phase(m_timing, "assemble");
+  std::vector<char> fixed;
+  fixedGlobalRows(fixed);
+  A.begin(m_systemSize);
+  ProjectedAccumulator projected(A, fixed);
+  StateOffsets offsets;
+  for (std::size_t i = 0; i < m_independent.size(); ++i) offsets.set(m_independent[i], m_offsets[i]);
+  for (BaseForceField* ff : m_forceFields)
+    if (mp.kFactor != 0 || mp.bFactor != 0) ff->accumulateKMatrix(mp, projected, offsets);
+  if (mp.mFactor != 0)
+    for (BaseMass* m : m_masses) m->accumulateMMatrix(projected, offsets, mp.mFactor);
+
+  // Mapped states: J^T (local matrix) J.
+  for (BaseMechanicalState* s : m_states) {
+    if (std::find(m_independent.begin(), m_independent.end(), s) != m_independent.end()) continue;
+    AssembledMatrix local;
+    local.begin(s->matrixSize());
+    StateOffsets localOffsets;
+    localOffsets.set(s, 0);
+    for (BaseForceField* ff : m_forceFields)
+      if (mp.kFactor != 0 || mp.bFactor != 0) ff->accumulateKMatrix(mp, local, localOffsets);
+    if (mp.mFactor != 0)
+      for (BaseMass* m : m_masses) m->accumulateMMatrix(local, localOffsets, mp.mFactor);
+    local.finish();
+    if (local.matrix().nonZeros() == 0) continue;
+    const Eigen::SparseMatrix<double> J = totalJacobian(s);
+    const Eigen::SparseMatrix<double> G = Eigen::SparseMatrix<double>(J.transpose()) *
+                                          local.matrix() * J;
+    for (Eigen::Index k = 0; k < G.outerSize(); ++k)
+      for (Eigen::SparseMatrix<double>::InnerIterator e(G, k); e; ++e)
+        projected.add(static_cast<std::size_t>(e.row()), static_cast<std::size_t>(e.col()),
+                      e.value());
+  }
+  for (std::size_t r = 0; r < m_systemSize; ++r)
+    if (fixed[r]) A.add(r, r, 1.0);
+  A.finish();
+}
+
+void MechanicalOperations::gather(VecId v, Eigen::VectorXd& out) const {
+  out.resize(static_cast<Eigen::Index>(m_systemSize));
+  for (std::size_t i = 0; i < m_independent.size(); ++i)
+    m_independent[i]->copyToGlobal(v, out, m_offsets[i]);
+}
+
+void MechanicalOperations::scatter(const Eigen::VectorXd& in, VecId v) {
+  for (std::size_t i = 0; i < m_independent.size(); ++i)
+    m_independent[i]->copyFromGlobal(v, in, m_offsets[i]);
+}
+
+double MechanicalOperations::potentialEnergy(const MechanicalParams& mp) const {
+  double e = 0;
+  for (const BaseForceField* ff : m_forceFields) e += ff->energy(mp);
+  return e;
+}
+
+double MechanicalOperations::kineticEnergy() const {
+  double e = 0;
+  for (const BaseMass* m : m_masses) e += m->kineticEnergyAt(VecId::velocity());
+  return e;
+}
+
+bool MechanicalOperations::checkFinite(VecId v, const std::string& what, Base& reporter) const {
+  for (const BaseMechanicalState* s : m_independent) {
+    std::size_t where = 0;
+    if (std::isfinite(s->vMaxAbs(v, where))) continue;
+    reporter.msgError("the simulation diverged at time " + std::to_string(time()) + ": " + what +
+                      " of " + s->path() + " is not finite at index " + std::to_string(where));
+    return false;
+  }
+  return true;
+}
+
+}  // namespace stroma

@@ -1,0 +1,109 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "linalg/AssembledMatrix.h"
+#include "simulation/VecId.h"
+
+namespace stroma {
+
+class Base;
+class BaseForceField;
+class BaseMapping;
+class BaseMass;
+class BaseMechanicalState;
+class BaseProjectiveConstraint;
+class Node;
+class Timing;
+
+/// The operations an ODE or linear solver performs on the whole mechanical system of its
+/// node's subtree (sub-nodes with their own solver excluded): vector algebra over every
+/// independent state, forces and their derivatives with mapped states handled through the
+/// mappings (J and J^T), projections by the constraints, and the assembled matrix
+/// m M + b B + k K with the mapped contributions J^T K J. Solvers use nothing else, so that they
+/// work for any mix of states, force fields, masses, constraints and mappings.
+///
+/// "Independent" states are those no mechanical mapping outputs; they are the unknowns.
+class MechanicalOperations {
+ public:
+  MechanicalOperations(Node& solverNode, Timing& timing);
+  ~MechanicalOperations();
+  MechanicalOperations(const MechanicalOperations&) = delete;
+  MechanicalOperations& operator=(const MechanicalOperations&) = delete;
+
+  Node& node() const { return m_node; }
+  Timing& timing() const { return m_timing; }
+  /// Simulation time at the start of the step.
+  double time() const;
+
+  const std::vector<BaseMechanicalState*>& independentStates() const { return m_independent; }
+  const std::vector<BaseMass*>& masses() const { return m_masses; }
+  bool hasState() const { return !m_independent.empty(); }
+
+  /// Temporary vectors on every state (independent and mapped), zeroed. Freed with freeVec
+  /// or when the operations end.
+  VecId allocDeriv();
+  VecId allocCoord();
+  void freeVec(VecId v);
+
+  /// v = a + b f on the independent states (see BaseMechanicalState::vOp).
+  void vOp(VecId v, VecId a, VecId b = VecId::null(), double f = 1.0);
+  double dot(VecId a, VecId b) const;
+  double norm(VecId a) const;
+
+  /// f = every force at (mp.x, mp.v), mapped forces included through J^T.
+  void computeForce(const MechanicalParams& mp, VecId f);
+  /// out = (mp.mFactor M + mp.bFactor B + mp.kFactor K) dx, mapped parts through J and J^T.
+  void computeMBKdx(const MechanicalParams& mp, VecId out, VecId dx);
+  /// a = M^-1 f, for lumped masses. Returns false (after an error naming the state) when a
+  /// state has no mass or a non-diagonal one.
+  bool accFromF(VecId a, VecId f);
+
+  void projectResponse(VecId dx);
+  void projectPosition(VecId x);
+  void projectVelocity(VecId v);
+  /// Positions and velocities of the mapped states from the independent ones.
+  void propagate(VecId x, VecId v);
+  /// Increments of the mapped states from those of the independent ones (dx -> J dx).
+  void propagateDx(VecId dx);
+
+  /// Rows of the assembled system: the independent states' deriv numbers, in order.
+  std::size_t systemSize() const { return m_systemSize; }
+  /// A = mp.mFactor M + mp.bFactor B + mp.kFactor K, with the rows and columns of fixed
+  /// degrees of freedom replaced by the identity.
+  void assemble(const MechanicalParams& mp, AssembledMatrix& A);
+  void gather(VecId v, Eigen::VectorXd& out) const;
+  void scatter(const Eigen::VectorXd& in, VecId v);
+
+  double potentialEnergy(const MechanicalParams& mp) const;
+  double kineticEnergy() const;
+
+  /// Reports NaN or infinity in `v` as an error of `reporter` (with the state and the
+  /// degree of freedom) and returns false.
+  bool checkFinite(VecId v, const std::string& what, Base& reporter) const;
+
+ private:
+  void collect(Node& node, bool isSolverNode);
+  void clearOnAll(VecId v);
+  void fixedGlobalRows(std::vector<char>& fixed) const;
+  Eigen::SparseMatrix<double> totalJacobian(const BaseMechanicalState* state);
+
+  Node& m_node;
+  Timing& m_timing;
+  std::vector<BaseMechanicalState*> m_states;       // all, top-down
+  std::vector<BaseMechanicalState*> m_independent;  // not outputs of a mechanical mapping
+  std::vector<BaseForceField*> m_forceFields;       // masses included
+  std::vector<BaseMass*> m_masses;
+  std::vector<BaseProjectiveConstraint*> m_constraints;
+  std::vector<BaseMapping*> m_mappings;  // mechanical ones, top-down
+  std::vector<std::size_t> m_offsets;    // per independent state
+  std::size_t m_systemSize = 0;
+  std::vector<VecId> m_temporaries;
+  int m_nextCoord = VecId::kFirstTemporary;
+  int m_nextDeriv = VecId::kFirstTemporary;
+};
+
+}  // namespace stroma

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "core/Base.h"
+#include "simulation/VecId.h"
+
+namespace stroma {
+
+class MechanicalOperations;
+
+/// Integrates the states of its node's subtree over one time step (subtrees with their own
+/// solver excluded), through MechanicalOperations only.
+class OdeSolver : public Base {
+ public:
+  virtual void solve(MechanicalOperations& mop, double dt) = 0;
+};
+
+/// Outcome of a linear solve, reported to the log by the solver and returned to the caller.
+struct LinearSolveReport {
+  bool converged = true;
+  int iterations = 0;
+  double residual = 0;  ///< final residual norm, relative to the right-hand side's
+};
+
+/// Solves (m M + b B + k K) x = rhs on the states of a MechanicalOperations, with the factors of
+/// `mp`, projected by the constraints.
+class LinearSolver : public Base {
+ public:
+  virtual LinearSolveReport solve(MechanicalOperations& mop, const MechanicalParams& mp, VecId x,
+                                  VecId rhs) = 0;
+};
+
+}  // namespace stroma
