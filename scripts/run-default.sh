@@ -3,5 +3,5 @@
 # The main job: install what is missing, build, and run the bundled default scene.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-./scripts/build.sh
+./scripts/build.sh -DSTROMA_BUILD_TESTS=OFF
 exec build/bin/stroma run scenes/default.scn "$@"
