@@ -7,7 +7,10 @@ void RequiredPlugin::init() {
   std::vector<std::string> names = d_pluginName.value();
   if (names.empty()) names.push_back(name());
   std::string list;
-  for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+  for (const auto& n : names) {
+    if (!list.empty()) list += ", ";
+    list += n;
+  }
   msgInfo("declared plugins " + list +
           ": not needed, the plugins of the scene's components are loaded on demand");
 }

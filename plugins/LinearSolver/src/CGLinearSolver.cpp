@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: MIT
+#include "CGLinearSolver.h"
+
+#include <cmath>
+
+#include "simulation/MechanicalOperations.h"
+#include "simulation/Timing.h"
+
+namespace stroma {
+
+LinearSolveReport CGLinearSolver::solve(MechanicalOperations& mop, const MechanicalParams& mp,
+                                        VecId x, VecId rhs) {
+  const bool assembled = templateName().rfind("CompressedRowSparseMatrix", 0) == 0;
+  LinearSolveReport r =
+      assembled ? solveAssembled(mop, mp, x, rhs) : solveMatrixFree(mop, mp, x, rhs);
+  report(r);
+  return r;
+}
+
+LinearSolveReport CGLinearSolver::solveMatrixFree(MechanicalOperations& mop,
+                                                  const MechanicalParams& mp, VecId x,
+                                                  VecId rhs) {
+  ScopedPhase phase(mop.timing(), "linearSolve");
+  LinearSolveReport report;
+  const VecId r = mop.allocDeriv(), p = mop.allocDeriv(), q = mop.allocDeriv();
+  const double normB = mop.norm(rhs);
+  if (normB == 0) {
+    mop.vOp(x, VecId::null(), VecId::null(), 0.0);
+    return report;
+  }
+  // r = rhs - A x
+  if (d_warmStart.value()) {
+    mop.computeMBKdx(mp, q, x);
+    mop.projectResponse(q);
+    mop.vOp(r, rhs, q, -1.0);
+  } else {
+    mop.vOp(x, VecId::null(), VecId::null(), 0.0);
+    mop.vOp(r, rhs);
+  }
+  mop.vOp(p, r);
+  double rho = mop.dot(r, r);
+  const int maxIterations = d_iterations.value();
+  const double tolerance = d_tolerance.value(), threshold = d_threshold.value();
+  report.converged = false;
+  while (true) {
+    report.residual = std::sqrt(rho) / normB;
+    if (report.residual <= tolerance) {
+      report.converged = true;
+      break;
+    }
+    if (report.iterations >= maxIterations) break;
+    mop.computeMBKdx(mp, q, p);
+    mop.projectResponse(q);
+    const double den = mop.dot(p, q);
+    if (std::abs(den) < threshold || !std::isfinite(den)) break;
+    const double alpha = rho / den;
+    mop.vOp(x, x, p, alpha);
+    mop.vOp(r, r, q, -alpha);
+    const double rhoNext = mop.dot(r, r);
+    mop.vOp(p, r, p, rhoNext / rho);
+    rho = rhoNext;
+    ++report.iterations;
+  }
+  mop.freeVec(q);
+  mop.freeVec(p);
+  mop.freeVec(r);
+  return report;
+}
+
+LinearSolveReport CGLinearSolver::solveAssembled(MechanicalOperations& mop,
+                                                 const MechanicalParams& mp, VecId x,
+                                                 VecId rhs) {
+  mop.assemble(mp, m_matrix);
+  ScopedPhase phase(mop.timing(), "linearSolve");
+  const Eigen::SparseMatrix<double>& A = m_matrix.matrix();
+  Eigen::VectorXd b, solution;
+  mop.gather(rhs, b);
+  if (d_warmStart.value()) mop.gather(x, solution);
+  else solution = Eigen::VectorXd::Zero(b.size());
+  Eigen::VectorXd inverseDiagonal = Eigen::VectorXd::Ones(b.size());
+  if (d_jacobiPreconditioner.value()) {
+    const Eigen::VectorXd d = A.diagonal();
+    for (Eigen::Index i = 0; i < d.size(); ++i) inverseDiagonal[i] = d[i] != 0 ? 1.0 / d[i] : 1.0;
+  }
+  LinearSolveReport report;
+  const double normB = b.norm();
+  if (normB == 0) {
+    mop.scatter(Eigen::VectorXd::Zero(b.size()), x);
+    return report;
+  }
+  Eigen::VectorXd r = b - A * solution;
+  Eigen::VectorXd z = inverseDiagonal.cwiseProduct(r);
+  Eigen::VectorXd p = z, q(b.size());
+  double rho = r.dot(z);
+  report.converged = false;
+  while (true) {
+    report.residual = r.norm() / normB;
+    if (report.residual <= d_tolerance.value()) {
+      report.converged = true;
+      break;
+    }
+    if (report.iterations >= d_iterations.value()) break;
+    q.noalias() = A * p;
+    const double den = p.dot(q);
+    if (std::abs(den) < d_threshold.value() || !std::isfinite(den)) break;
+    const double alpha = rho / den;
+    solution += alpha * p;
+    r -= alpha * q;
+    z = inverseDiagonal.cwiseProduct(r);
+    const double rhoNext = r.dot(z);
+    p = z + (rhoNext / rho) * p;
+    rho = rhoNext;
+    ++report.iterations;
+  }
+  mop.scatter(solution, x);
+  return report;
+}
+
+void CGLinearSolver::report(const LinearSolveReport& r) {
+  ++m_solves;
+  d_lastIterations.setValue(r.iterations);
+  d_lastResidual.setValue(r.residual);
+  if (d_verbose.value())
+    msgInfo("CG: " + std::to_string(r.iterations) + " iterations, relative residual " +
+            std::to_string(r.residual));
+  if (r.converged) return;
+  if (m_unconverged++ == 0)
+    msgWarning("CG stopped after " + std::to_string(r.iterations) +
+                   " iterations without converging: relative residual " +
+                   std::to_string(r.residual) + " > tolerance " +
+                   std::to_string(d_tolerance.value()) +
+                   " (raise iterations, or check the system); later ones are counted",
+               "iterations");
+}
+
+void CGLinearSolver::cleanup() {
+  if (m_unconverged > 1)
+    msgWarning("CG did not converge in " + std::to_string(m_unconverged) + " of " +
+                   std::to_string(m_solves) + " solves",
+               "iterations");
+}
+
+}  // namespace stroma

@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "simulation/Solvers.h"
+
+namespace stroma {
+
+/// Explicit Euler (SOFA's EulerExplicitSolver). With symplectic="true" (the default), the
+/// semi-implicit (symplectic) Euler scheme:
+///   a = M^-1 f(x_n, v_n),  v_{n+1} = v_n + h a,  x_{n+1} = x_n + h v_{n+1};
+/// otherwise forward Euler, x_{n+1} = x_n + h v_n. Needs lumped masses. Stable only below the
+/// Courant time step of the stiffest element.
+class EulerExplicitSolver final : public OdeSolver {
+ public:
+  Data<bool> d_symplectic{this, "symplectic", true,
+                          "Semi-implicit (symplectic) Euler: positions use the new velocities."};
+  Data<bool> d_optimizedForDiagonalMatrix{this, "optimizedForDiagonalMatrix", true,
+                                          "SOFA option, accepted: lumped masses are required."};
+  Data<bool> d_threadSafeVisitor{this, "threadSafeVisitor", false,
+                                 "SOFA option, accepted and without effect."};
+
+  void solve(MechanicalOperations& mop, double dt) override;
+};
+
+}  // namespace stroma
