@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build g++ ccache pkg-config
-  libeigen3-dev libtinyxml2-dev
+  libeigen3-dev libtinyxml2-dev libtbb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev   # libFuzzer and LeakSanitizer for the fuzz and leak tests
 )

@@ -38,7 +38,10 @@ int listCommand(const std::vector<std::string>& args) {
       std::cout << "  " << c->name;
       if (c->isTemplated()) std::cout << '<' << [&] {
         std::string t;
-        for (const auto& n : c->templateNames()) t += (t.empty() ? "" : ",") + n;
+        for (const auto& n : c->templateNames()) {
+          if (!t.empty()) t += ',';
+          t += n;
+        }
         return t;
       }() << '>';
       if (!c->aliases.empty()) {

@@ -91,6 +91,12 @@ Vec3d Node::gravity() const {
   return d_gravity.value();
 }
 
+const ThreadPool& Node::threadPool() const {
+  static const ThreadPool serial(1);  // immutable: safe to share between scenes
+  const Node& r = root();
+  return r.m_pool ? *r.m_pool : serial;
+}
+
 double Node::time() const { return root().d_time.value(); }
 
 void Node::setTime(double t) { root().d_time.setValue(t); }

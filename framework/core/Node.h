@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/Base.h"
+#include "core/ThreadPool.h"
 
 namespace stroma {
 
@@ -93,10 +94,16 @@ class Node final : public Base {
   void setMessageLog(MessageLog* log) { m_log = log; }
   MessageLog* sceneLog() const { return root().m_log; }
 
+  /// The threads of the scene this node belongs to (set on the root by the scene); a
+  /// single-threaded pool when the node is not in a scene.
+  void setThreadPool(const ThreadPool* pool) { m_pool = pool; }
+  const ThreadPool& threadPool() const;
+
  private:
   std::vector<std::unique_ptr<Node>> m_children;
   std::vector<std::unique_ptr<Base>> m_objects;
   MessageLog* m_log = nullptr;
+  const ThreadPool* m_pool = nullptr;
 };
 
 }  // namespace stroma

@@ -216,7 +216,8 @@ bool PluginManager::loadAll(std::string& error) {
   for (const auto& entry : m_index) {
     std::string one;
     if (!isLoaded(entry.name) && !loadLibrary(entry.library, one)) {
-      error += (error.empty() ? "" : "\n") + one;
+      if (!error.empty()) error += '\n';
+      error += one;
       ok = false;
     }
   }

@@ -14,7 +14,12 @@ namespace stroma {
 
 namespace fs = std::filesystem;
 
-Scene::Scene(Runtime& runtime) : m_runtime(runtime) {}
+Scene::Scene(Runtime& runtime) : m_runtime(runtime), m_pool(std::make_unique<ThreadPool>(0)) {}
+
+void Scene::setThreadCount(int threads) {
+  m_pool = std::make_unique<ThreadPool>(threads);
+  if (m_root) m_root->setThreadPool(m_pool.get());
+}
 
 Scene::~Scene() { unload(); }
 
@@ -69,7 +74,7 @@ bool Scene::load(std::string_view xml, const fs::path& file) {
     return m_runtime.findFile(href, {from, m_file.parent_path()});
   };
   if (!parseSceneXml(xml, file, resolveInclude, m_log, root)) return false;
-  const bool built = buildSceneGraph(m_runtime, root, file, m_log, m_root);
+  const bool built = buildSceneGraph(m_runtime, root, file, m_log, m_root, m_pool.get());
   if (m_root) m_root->setMessageLog(&m_log);
   m_loaded = built && m_log.errorCount() == errorsBefore;
   return m_loaded;

@@ -8,6 +8,7 @@
 
 #include "core/Message.h"
 #include "core/Node.h"
+#include "core/ThreadPool.h"
 #include "simulation/Timing.h"
 
 namespace stroma {
@@ -48,9 +49,10 @@ class Scene {
   const std::filesystem::path& file() const { return m_file; }
   long long stepCount() const { return m_steps; }
 
-  /// Threads that parallel element loops of this scene may use (0: all cores).
-  void setThreadCount(int threads) { m_threads = threads; }
-  int threadCount() const { return m_threads; }
+  /// Threads that parallel element loops of this scene may use (0: all cores). Set before
+  /// loading, or between steps.
+  void setThreadCount(int threads);
+  int threadCount() const { return m_pool->threadCount(); }
 
   /// Cleans up and destroys the graph; the scene can then load again.
   void unload();
@@ -64,7 +66,7 @@ class Scene {
   std::unique_ptr<Node> m_root;
   std::filesystem::path m_file;
   long long m_steps = 0;
-  int m_threads = 0;
+  std::unique_ptr<ThreadPool> m_pool;
   bool m_loaded = false;
 };
 

@@ -177,7 +177,10 @@ class GraphBuilder {
     }
     if (data.options().output) return;  // a file the component will write
     std::string searched;
-    for (const auto& d : dirs) searched += (searched.empty() ? "" : ", ") + d.string();
+    for (const auto& d : dirs) {
+      if (!searched.empty()) searched += ", ";
+      searched += d.string();
+    }
     for (const auto& d : m_runtime.dataPath()) searched += ", " + d.string();
     const std::string text = "file '" + name + "' not found (searched: " + searched +
                              "; add folders with --data-path or STROMA_DATA_PATH)";
@@ -232,7 +235,8 @@ class GraphBuilder {
         continue;
       }
       for (BaseData* field : source->dataFields()) {
-        if (field->name() == "name" || field->name() == "printLog" || field->name() == "tags")
+        if (field->name() == "name" || field->name() == "printLog" || field->name() == "tags" ||
+            !field->options().autoLink)
           continue;
         BaseData* mine = s.object->findData(field->name());
         if (!mine || mine->isSet() || !mine->linkText().empty() || mine->options().output)
@@ -296,11 +300,12 @@ class InitVisitor final : public Visitor {
 }  // namespace
 
 bool buildSceneGraph(Runtime& runtime, const SceneElement& root, const fs::path& sceneFile,
-                     MessageLog& log, std::unique_ptr<Node>& graph) {
+                     MessageLog& log, std::unique_ptr<Node>& graph, const ThreadPool* threads) {
   const std::size_t errorsBefore = log.errorCount();
   GraphBuilder builder(runtime, sceneFile, log);
   graph = builder.build(root);
   if (!graph) return false;
+  graph->setThreadPool(threads);
   if (log.errorCount() != errorsBefore) return false;  // do not init a graph with bad input
   InitVisitor init;
   traverse(*graph, init);

@@ -20,6 +20,6 @@ class Runtime;
 /// searched for relative file names).
 bool buildSceneGraph(Runtime& runtime, const SceneElement& root,
                      const std::filesystem::path& sceneFile, MessageLog& log,
-                     std::unique_ptr<Node>& graph);
+                     std::unique_ptr<Node>& graph, const ThreadPool* threads = nullptr);
 
 }  // namespace stroma
