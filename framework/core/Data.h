@@ -34,6 +34,9 @@ struct DataOptions {
   bool allowNonFinite = false;    ///< NaN and infinities are refused unless this is true
   bool output = false;            ///< computed by the component (loaders, engines); linkable
   bool mustExist = true;          ///< for a FileName: a missing file is an error (else a warning)
+  /// False for a source's settings that `src="@source"` must not copy (a loader's translation
+  /// or filename: the follower would apply them a second time), as SOFA's setAutoLink(false).
+  bool autoLink = true;
 };
 
 namespace internal {
