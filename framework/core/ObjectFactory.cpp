@@ -17,6 +17,16 @@ std::vector<std::string> ComponentClass::templateNames() const {
 }
 
 std::string normalizeTemplateName(std::string_view name) {
+  // A mapping's template names its input and output kinds: "Rigid3,Vec3" is "Rigid3d,Vec3d".
+  if (const auto comma = name.find(','); comma != std::string_view::npos) {
+    auto trimmed = [](std::string_view part) {
+      while (!part.empty() && part.front() == ' ') part.remove_prefix(1);
+      while (!part.empty() && part.back() == ' ') part.remove_suffix(1);
+      return part;
+    };
+    return normalizeTemplateName(trimmed(name.substr(0, comma))) + "," +
+           normalizeTemplateName(trimmed(name.substr(comma + 1)));
+  }
   std::string n(name);
   if (n.size() >= 4 && n.compare(0, 3, "Vec") == 0) {
     const char last = n.back();
@@ -114,6 +124,16 @@ std::unique_ptr<Base> ObjectFactory::create(std::string_view nameOrAlias,
       if (!wanted.empty() && v.templateName == wanted) byScene = &v;
       if (!context.empty() && v.templateName == context) byContext = &v;
     }
+    // A mapping ("In,Out") takes the kind of the state it is created beside as its output.
+    if (!byContext && !context.empty())
+      for (const auto& v : c->variants) {
+        const auto comma = v.templateName.rfind(',');
+        if (comma != std::string::npos && v.templateName.compare(comma + 1, std::string::npos,
+                                                                 context) == 0) {
+          byContext = &v;
+          break;
+        }
+      }
     if (!wanted.empty() && !byScene) {
       error = "component '" + c->name + "' has no template '" + std::string(templateName) +
               "'; available: " + quotedList(c->templateNames());

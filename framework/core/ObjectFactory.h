@@ -35,7 +35,8 @@ struct ComponentClass {
 
 /// The canonical spelling of a template name: "Vec3" and "Vec3f" are "Vec3d", "Rigid" and
 /// "Rigid3" are "Rigid3d". Stroma computes in double precision; single-precision template names
-/// of SOFA scenes map to the double ones.
+/// of SOFA scenes map to the double ones. A mapping's "In,Out" pair is normalized part by part
+/// ("Rigid3,Vec3" is "Rigid3d,Vec3d").
 std::string normalizeTemplateName(std::string_view name);
 
 class ObjectFactory;

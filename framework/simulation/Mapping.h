@@ -7,6 +7,7 @@
 #include "core/Node.h"
 #include "simulation/MechanicalState.h"
 #include "simulation/VecId.h"
+#include "simulation/VisualModel.h"
 
 namespace stroma {
 
@@ -37,26 +38,71 @@ class Mapping : public BaseMapping {
   using OutVecCoord = std::vector<typename Out::Coord>;
   using OutVecDeriv = std::vector<typename Out::Deriv>;
 
-  Link<InState> l_input{this, "input", "Input state (default: the parent node's)."};
+  // Links to Base, so that SOFA's `input="@.."` (a node: its state) resolves as in SOFA.
+  Link<Base> l_input{this, "input",
+                     "Input state, or the node holding it (default: the parent nodes' state)."};
   Link<Base> l_output{this, "output",
-                      "Output: a state (default: this node's) or a visual model."};
+                      "Output: a state or a visual model, or the node holding it (default: "
+                      "this node's state, else its visual model)."};
 
-  InState* input() const { return l_input.get(); }
-  OutState* output() const { return dynamic_cast<OutState*>(l_output.get()); }
+  /// The states, found by init().
+  InState* input() const { return m_input; }
+  /// The mechanical output, or nullptr when the output is a visual model.
+  OutState* output() const { return m_output; }
+  /// A visual output (OglModel, ...), or nullptr. Batch runs never map it.
+  Base* visualOutput() const { return m_visualOutput; }
   BaseMechanicalState* fromState() const final { return input(); }
   BaseMechanicalState* toState() const final { return output(); }
 
-  /// Finds the input and output. Components that override init() call this first.
-  void init() override {
+  /// Finds the input and output. Components that override init() call this first and stop
+  /// when it returns false (after it reported the error).
+  void init() override { findStates(); }
+
+ protected:
+  bool findStates() {
     Node* node = this->node();
-    if (!l_input && node && node->parent()) l_input.set(node->parent()->template getUp<InState>());
-    if (!l_output && node) l_output.set(node->template get<OutState>());
-    if (!l_input)
-      this->msgError(std::string("no input state of template ") + In::name +
-                     " in the parent nodes", "input");
-    if (!l_output) this->msgError("no output state in this node", "output");
+    m_input = nullptr;
+    m_output = nullptr;
+    m_visualOutput = nullptr;
+    Base* in = l_input.get();
+    if (auto* n = dynamic_cast<Node*>(in)) in = n->template get<BaseMechanicalState>();
+    if (!l_input && node && node->parent()) in = node->parent()->template getUp<InState>();
+    m_input = dynamic_cast<InState*>(in);
+    if (!m_input) {
+      this->msgError(in ? in->path() + " is a " + in->className() + " " + in->templateName() +
+                              ", not a mechanical state of template " + In::name
+                        : std::string("no mechanical state of template ") + In::name +
+                              (l_input ? " in " + l_input->path()
+                                       : std::string(" in the parent nodes")),
+                     "input");
+    }
+    Base* out = l_output.get();
+    if (auto* n = dynamic_cast<Node*>(out)) out = outputIn(*n);
+    if (!l_output && node) out = outputIn(*node);
+    m_output = dynamic_cast<OutState*>(out);
+    if (!m_output && dynamic_cast<VisualModel*>(out)) m_visualOutput = out;
+    if (!m_output && !m_visualOutput)
+      this->msgError(out ? out->path() + " is a " + out->className() + " " +
+                               out->templateName() + ", not a mechanical state of template " +
+                               Out::name + " nor a visual model"
+                         : std::string("no output state of template ") + Out::name +
+                               " nor visual model in " +
+                               (l_output ? l_output->path() : std::string("this node")),
+                     "output");
+    return m_input && (m_output || m_visualOutput);
   }
 
+ private:
+  static Base* outputIn(const Node& node) {
+    if (auto* s = node.template get<BaseMechanicalState>()) return s;
+    return node.template get<VisualModel>();
+  }
+
+  InState* m_input = nullptr;
+  OutState* m_output = nullptr;
+  Base* m_visualOutput = nullptr;
+
+ public:
   virtual void apply(OutVecCoord& out, const InVecCoord& in) = 0;
   virtual void applyJ(OutVecDeriv& out, const InVecDeriv& in) = 0;
   virtual void applyJT(InVecDeriv& in, const OutVecDeriv& out) = 0;

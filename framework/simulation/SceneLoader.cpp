@@ -87,6 +87,11 @@ class GraphBuilder {
     std::string why;
     std::unique_ptr<Base> object =
         m_runtime.create(e.tag, templ ? *templ : std::string(), contextTemplate, why);
+    // A state takes the scene's template or its class's default, never its parent's (as in
+    // SOFA: a MechanicalObject without template in a child of a Rigid3d node, the output of a
+    // RigidMapping, holds Vec3d points).
+    if (object && !templ && !contextTemplate.empty() && dynamic_cast<BaseState*>(object.get()))
+      object = m_runtime.create(e.tag, std::string(), std::string(), why);
     if (!object) {
       m_failedNames.push_back(displayName);
       error(e.where, childPath(node, displayName), e.tag, templ && why.find("template") !=

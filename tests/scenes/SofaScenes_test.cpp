@@ -55,6 +55,8 @@ const KnownGap kKnownGaps[] = {
      "the scene links to a node that does not exist; SOFA only warns"},
     {"Heterogeneous-TetrahedronFEMForceField.scn", "broken link '@../mstate.rest_position'",
      "rest_position", "the scene links to an object that does not exist; SOFA only warns"},
+    {"RigidMapping-basic.scn", "index 0 is out of range of the 0 input frames", "index",
+     "StateContainer: SOFA's MechanicalObject without positions holds one degree of freedom"},
 };
 
 const KnownGap* knownGap(const fs::path& file, const Message& m) {
