@@ -32,7 +32,7 @@ class SolveVisitor final : public Visitor {
   Result processNodeTopDown(Node& node) override {
     for (OdeSolver* solver : node.getAll<OdeSolver>()) {
       if (!solver->isValid()) continue;
-      MechanicalOperations mop(node, m_timing);
+      MechanicalOperations mop(node, m_timing, m_dt);
       solver->solve(mop, m_dt);
     }
     return Result::carryOn;

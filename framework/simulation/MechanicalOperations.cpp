@@ -14,8 +14,8 @@
 
 namespace stroma {
 
-MechanicalOperations::MechanicalOperations(Node& solverNode, Timing& timing)
-    : m_node(solverNode), m_timing(timing) {
+MechanicalOperations::MechanicalOperations(Node& solverNode, Timing& timing, double dt)
+    : m_node(solverNode), m_timing(timing), m_dt(dt) {
   collect(solverNode, true);
   for (BaseMechanicalState* s : m_states) {
     const bool mapped = std::any_of(m_mappings.begin(), m_mappings.end(),
@@ -133,11 +133,11 @@ void MechanicalOperations::projectResponse(VecId dx) {
 }
 
 void MechanicalOperations::projectPosition(VecId x) {
-  for (BaseProjectiveConstraint* c : m_constraints) c->constrainPosition(x, time());
+  for (BaseProjectiveConstraint* c : m_constraints) c->constrainPosition(x, endTime());
 }
 
 void MechanicalOperations::projectVelocity(VecId v) {
-  for (BaseProjectiveConstraint* c : m_constraints) c->constrainVelocity(v, time());
+  for (BaseProjectiveConstraint* c : m_constraints) c->constrainVelocity(v, endTime());
 }
 
 void MechanicalOperations::propagate(VecId x, VecId v) {

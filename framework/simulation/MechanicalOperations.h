@@ -29,7 +29,9 @@ class Timing;
 /// "Independent" states are those no mechanical mapping outputs; they are the unknowns.
 class MechanicalOperations {
  public:
-  MechanicalOperations(Node& solverNode, Timing& timing);
+  /// `dt`: the duration of the step being solved (0 when unknown); the constraints impose
+  /// positions and velocities at its end (see projectPosition).
+  MechanicalOperations(Node& solverNode, Timing& timing, double dt = 0);
   ~MechanicalOperations();
   MechanicalOperations(const MechanicalOperations&) = delete;
   MechanicalOperations& operator=(const MechanicalOperations&) = delete;
@@ -38,6 +40,8 @@ class MechanicalOperations {
   Timing& timing() const { return m_timing; }
   /// Simulation time at the start of the step.
   double time() const;
+  /// Simulation time at the end of the step: time() + dt.
+  double endTime() const { return time() + m_dt; }
 
   const std::vector<BaseMechanicalState*>& independentStates() const { return m_independent; }
   const std::vector<BaseMass*>& masses() const { return m_masses; }
@@ -63,6 +67,8 @@ class MechanicalOperations {
   bool accFromF(VecId a, VecId f);
 
   void projectResponse(VecId dx);
+  /// Impose the constrained positions and velocities of the end of the step (endTime()): the
+  /// solvers call them on the integrated state.
   void projectPosition(VecId x);
   void projectVelocity(VecId v);
   /// Positions and velocities of the mapped states from the independent ones.
@@ -93,6 +99,7 @@ class MechanicalOperations {
 
   Node& m_node;
   Timing& m_timing;
+  double m_dt = 0;
   std::vector<BaseMechanicalState*> m_states;       // all, top-down
   std::vector<BaseMechanicalState*> m_independent;  // not outputs of a mechanical mapping
   std::vector<BaseForceField*> m_forceFields;       // masses included

@@ -17,7 +17,8 @@ class BaseProjectiveConstraint : public Base {
  public:
   /// Removes the constrained directions from a deriv vector (forces, increments).
   virtual void constrainResponse(VecId dx) = 0;
-  /// Imposes the constrained velocities and positions at `time`.
+  /// Imposes the constrained velocities and positions at `time`: the end of the step being
+  /// solved (MechanicalOperations::endTime()), whose state they are called on.
   virtual void constrainVelocity(VecId v, double time) = 0;
   virtual void constrainPosition(VecId x, double time) = 0;
   /// The scalar rows (within its state) that are fully fixed, for the assembled path: their

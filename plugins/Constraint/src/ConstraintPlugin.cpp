@@ -1,14 +1,27 @@
 // SPDX-License-Identifier: MIT
 #include "FixedProjectiveConstraint.h"
+#include "LinearMovementProjectiveConstraint.h"
+#include "PartialFixedProjectiveConstraint.h"
 #include "core/Plugin.h"
 
 namespace {
 
 void registerComponents(stroma::PluginRegistry& registry) {
   using namespace stroma;
-  registry.add("FixedProjectiveConstraint", "Fixes points by projection")
-      .with<FixedProjectiveConstraint>("Vec3d")
+  registry.add("FixedProjectiveConstraint", "Fixes points or rigid frames by projection")
+      .with<FixedProjectiveConstraint<Vec3Types>>("Vec3d")
+      .with<FixedProjectiveConstraint<Rigid3Types>>("Rigid3d")
       .alias("FixedConstraint");
+  registry.add("PartialFixedProjectiveConstraint",
+               "Fixes some directions of points or rigid frames by projection")
+      .with<PartialFixedProjectiveConstraint<Vec3Types>>("Vec3d")
+      .with<PartialFixedProjectiveConstraint<Rigid3Types>>("Rigid3d")
+      .alias("PartialFixedConstraint");
+  registry.add("LinearMovementProjectiveConstraint",
+               "Moves points or rigid frames along a piecewise-linear trajectory")
+      .with<LinearMovementProjectiveConstraint<Vec3Types>>("Vec3d")
+      .with<LinearMovementProjectiveConstraint<Rigid3Types>>("Rigid3d")
+      .alias("LinearMovementConstraint");
 }
 
 }  // namespace

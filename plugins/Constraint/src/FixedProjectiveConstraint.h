@@ -6,11 +6,16 @@
 
 namespace stroma {
 
-/// Fixes points (SOFA's FixedProjectiveConstraint, formerly FixedConstraint): their forces,
-/// increments and velocities are zeroed, so they stay where they start. Changing `indices`
-/// while running takes effect at the next step.
-class FixedProjectiveConstraint final : public ProjectiveConstraint<Vec3Types> {
+/// Fixes points or rigid frames (SOFA's FixedProjectiveConstraint, formerly FixedConstraint):
+/// their forces, increments and velocities are zeroed, so they stay where they start; their
+/// rows and columns of an assembled matrix become the identity. Changing `indices` while
+/// running takes effect at the next step.
+template <class DataTypes>
+class FixedProjectiveConstraint final : public ProjectiveConstraint<DataTypes> {
  public:
+  using typename ProjectiveConstraint<DataTypes>::VecCoord;
+  using typename ProjectiveConstraint<DataTypes>::VecDeriv;
+
   Data<std::vector<unsigned>> d_indices{this, "indices", {}, "Indices of the fixed points."};
   Data<bool> d_fixAll{this, "fixAll", false, "Fix every point."};
   Data<bool> d_activateProjectVelocity{this, "activate_projectVelocity", false,

@@ -6,8 +6,9 @@ namespace {
 
 void registerComponents(stroma::PluginRegistry& registry) {
   using namespace stroma;
-  registry.add("UniformMass", "The same mass at every point; applies gravity")
-      .with<UniformMass>("Vec3d");
+  registry.add("UniformMass", "The same mass at every point or rigid frame; applies gravity")
+      .with<UniformMass<Vec3Types>>("Vec3d")
+      .with<UniformMass<Rigid3Types>>("Rigid3d");
 }
 
 }  // namespace

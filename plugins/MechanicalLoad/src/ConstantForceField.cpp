@@ -1,53 +1,71 @@
 // SPDX-License-Identifier: MIT
 #include "ConstantForceField.h"
 
+#include "IndexChecks.h"
+
 namespace stroma {
 
-void ConstantForceField::init() {
-  ForceField<Vec3Types>::init();
-  if (!mstate()) return;
-  const std::size_t n = mstate()->size();
-  for (unsigned i : d_indices.value())
-    if (i >= n) {
-      msgError("index " + std::to_string(i) + " out of range of the " + std::to_string(n) +
-                   " points",
-               "indices");
-      break;
-    }
+namespace {
+
+Vec3d scaled(const Vec3d& d, double s) { return s * d; }
+RigidDeriv3 scaled(const RigidDeriv3& d, double s) { return {s * d.linear, s * d.angular}; }
+void accumulate(Vec3d& to, const Vec3d& d) { to += d; }
+void accumulate(RigidDeriv3& to, const RigidDeriv3& d) {
+  to.linear += d.linear;
+  to.angular += d.angular;
+}
+double work(const Vec3d& f, const Vec3d& x) { return f.dot(x); }
+double work(const RigidDeriv3& f, const RigidCoord3& x) { return f.linear.dot(x.center); }
+
+}  // namespace
+
+template <class DataTypes>
+void ConstantForceField<DataTypes>::init() {
+  ForceField<DataTypes>::init();
+  if (!this->mstate()) return;
+  const std::size_t n = this->mstate()->size();
+  reportIndicesOutOfRange(*this, d_indices.value(), n, "indices");
   const auto& forces = d_forces.value();
   const std::size_t count = d_indices.value().empty() ? n : d_indices.value().size();
   if (!forces.empty() && forces.size() != count && forces.size() != 1)
-    msgError("has " + std::to_string(forces.size()) + " forces for " + std::to_string(count) +
-                 " indices",
-             "forces");
+    this->msgError("has " + std::to_string(forces.size()) + " forces for " +
+                       std::to_string(count) + " indices",
+                   "forces");
 }
 
 // f(index, force) for every loaded point.
+template <class DataTypes>
 template <class F>
-void ConstantForceField::forEachForce(std::size_t n, F&& f) const {
+void ConstantForceField<DataTypes>::forEachForce(std::size_t n, F&& f) const {
   const auto& indices = d_indices.value();
   const std::size_t count = indices.empty() ? n : indices.size();
   const auto& forces = d_forces.value();
-  const Vec3d share = count ? Vec3d(d_totalForce.value() / static_cast<double>(count))
-                            : Vec3d::Zero();
+  const Deriv share = scaled(d_totalForce.value(), count ? 1.0 / static_cast<double>(count) : 0.0);
   for (std::size_t k = 0; k < count; ++k) {
     const std::size_t i = indices.empty() ? k : indices[k];
     if (i >= n) continue;
-    Vec3d force = d_force.value() + share;
-    if (!forces.empty()) force += forces.size() == 1 ? forces[0] : forces[k];
+    Deriv force = d_force.value();
+    accumulate(force, share);
+    if (!forces.empty()) accumulate(force, forces.size() == 1 ? forces[0] : forces[k]);
     f(i, force);
   }
 }
 
-void ConstantForceField::addForce(const MechanicalParams&, VecDeriv& f, const VecCoord&,
-                                  const VecDeriv&) {
-  forEachForce(f.size(), [&](std::size_t i, const Vec3d& force) { f[i] += force; });
+template <class DataTypes>
+void ConstantForceField<DataTypes>::addForce(const MechanicalParams&, VecDeriv& f,
+                                             const VecCoord&, const VecDeriv&) {
+  forEachForce(f.size(), [&](std::size_t i, const Deriv& force) { accumulate(f[i], force); });
 }
 
-double ConstantForceField::potentialEnergy(const MechanicalParams&, const VecCoord& x) const {
+template <class DataTypes>
+double ConstantForceField<DataTypes>::potentialEnergy(const MechanicalParams&,
+                                                      const VecCoord& x) const {
   double e = 0;
-  forEachForce(x.size(), [&](std::size_t i, const Vec3d& force) { e -= force.dot(x[i]); });
+  forEachForce(x.size(), [&](std::size_t i, const Deriv& force) { e -= work(force, x[i]); });
   return e;
 }
+
+template class ConstantForceField<Vec3Types>;
+template class ConstantForceField<Rigid3Types>;
 
 }  // namespace stroma

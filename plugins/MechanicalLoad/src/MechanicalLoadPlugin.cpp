@@ -1,12 +1,18 @@
 // SPDX-License-Identifier: MIT
 #include "ConstantForceField.h"
+#include "PlaneForceField.h"
 #include "core/Plugin.h"
 
 namespace {
 
 void registerComponents(stroma::PluginRegistry& registry) {
   using namespace stroma;
-  registry.add("ConstantForceField", "Constant forces on points").with<ConstantForceField>("Vec3d");
+  registry.add("ConstantForceField", "Constant forces on points or rigid frames")
+      .with<ConstantForceField<Vec3Types>>("Vec3d")
+      .with<ConstantForceField<Rigid3Types>>("Rigid3d");
+  registry.add("PlaneForceField", "Penalty plane pushing points back to its free side")
+      .with<PlaneForceField<Vec3Types>>("Vec3d")
+      .with<PlaneForceField<Rigid3Types>>("Rigid3d");
 }
 
 }  // namespace

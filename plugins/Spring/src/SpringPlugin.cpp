@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: MIT
+#include "SpringForceField.h"
+#include "core/Plugin.h"
+
+namespace {
+
+void registerComponents(stroma::PluginRegistry& registry) {
+  using namespace stroma;
+  registry.add("SpringForceField", "Linear springs between points of one or two states")
+      .with<SpringForceField>("Vec3d")
+      .alias("StiffSpringForceField");
+}
+
+}  // namespace
+
+extern "C" STROMA_PLUGIN_EXPORT const stroma::PluginEntry* stroma_plugin_entry() {
+  static const stroma::PluginEntry entry =
+      stroma::makePluginEntry("Spring", "0.1.0", "Mass-spring models", registerComponents);
+  return &entry;
+}
