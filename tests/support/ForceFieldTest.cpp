@@ -43,8 +43,7 @@ BaseForceField* findField(const Node& root, const std::string& path, std::string
     return nullptr;
   }
   std::vector<BaseForceField*> plain, masses;
-  for (BaseForceField* f : fields)
-    (dynamic_cast<BaseMass*>(f) ? masses : plain).push_back(f);
+  for (BaseForceField* f : fields) (dynamic_cast<BaseMass*>(f) ? masses : plain).push_back(f);
   const auto& pick = plain.empty() ? masses : plain;
   if (pick.size() == 1) return pick.front();
   why = pick.empty() ? "the scene has no force field"
@@ -110,8 +109,7 @@ class Harness {
     // Rest shape, then the perturbed positions x0 every check starts from.
     m_mop.vOp(x, rest);
     const Eigen::VectorXd fRest = force();
-    scatter(randomVector(m_report.spacing * m_options.perturbation, m_options.perturbation),
-            m_dx);
+    scatter(randomVector(m_report.spacing * m_options.perturbation, m_options.perturbation), m_dx);
     m_mop.vOp(m_x0, rest, m_dx, 1.0);
     m_mop.vOp(x, m_x0);
     const Eigen::VectorXd f0 = force();
@@ -120,6 +118,7 @@ class Harness {
 
     checkDerivatives(f0);
     checkMatrices();
+    checkDamping();
     if (m_options.rotationInvariant) {
       checkMomentum(f0);
       checkRigidMotions(f0.norm());
@@ -221,6 +220,48 @@ class Harness {
       const Eigen::SparseMatrix<double> Kt = K.transpose();
       m_report.asymmetry = ratio((K - Kt).norm(), K.norm());
     }
+  }
+
+  // (f) damping: the bFactor part of addDForce and addKToMatrix against the central difference
+  // of addForce in the velocities (at the perturbed positions, about zero velocity).
+  void checkDamping() {
+    const double h = m_options.fdStep;
+    MechanicalParams damping;
+    damping.kFactor = 0;
+    damping.bFactor = 1;
+    const VecId v = VecId::velocity();
+    m_report.dampingError = m_report.dampingNoise = m_report.dampingMatrixError = 0;
+    m_mop.vOp(VecId::position(), m_x0);
+    AssembledMatrix B;
+    for (int k = 0; k < m_options.samples; ++k) {
+      const Eigen::VectorXd dir = randomVector(m_report.spacing, 1.0);
+      scatter(dir, m_dx);
+      m_mop.vOp(v, VecId::null());
+      force();
+      m_mop.vOp(m_df, VecId::null());
+      m_field.accumulateDForce(damping, m_df, m_dx);
+      const Eigen::VectorXd Bdv = gather(m_df);
+      if (k == 0) {
+        B.begin(m_report.dofs);
+        m_field.accumulateKMatrix(damping, B, m_offsets);
+        B.finish();
+      }
+      const Eigen::VectorXd BdvAssembled = B.matrix() * dir;
+      m_mop.vOp(v, VecId::null(), m_dx, h);
+      const Eigen::VectorXd fPlus = force();
+      m_mop.vOp(v, VecId::null(), m_dx, -h);
+      const Eigen::VectorXd fMinus = force();
+      const Eigen::VectorXd fd = (fPlus - fMinus) / (2 * h);
+      const double scale = std::max(Bdv.norm(), fd.norm());
+      m_report.dampingError = std::max(m_report.dampingError, ratio((Bdv - fd).norm(), scale));
+      m_report.dampingNoise =
+          std::max(m_report.dampingNoise,
+                   ratio(100 * kEps * (fPlus.norm() + fMinus.norm()) / (2 * h), scale));
+      m_report.dampingMatrixError =
+          std::max(m_report.dampingMatrixError,
+                   ratio((BdvAssembled - Bdv).norm(), std::max(Bdv.norm(), BdvAssembled.norm())));
+    }
+    m_mop.vOp(v, VecId::null());
   }
 
   // (e) at the perturbed positions: no net force, no net moment (about the origin).
@@ -349,8 +390,7 @@ std::string messagesOf(const MessageLog& log, bool warningsToo) {
 
 void expectBelow(double value, double bound, const char* what, const ForceFieldTestReport& r) {
   if (value < 0) return;  // not run
-  EXPECT_LE(value, bound) << what << " is " << value << ", above " << bound << "\n"
-                          << r.describe();
+  EXPECT_LE(value, bound) << what << " is " << value << ", above " << bound << "\n" << r.describe();
 }
 
 }  // namespace
@@ -361,8 +401,10 @@ std::string ForceFieldTestReport::describe() const {
   out << "dofs " << dofs << ", spacing " << spacing << ", |f| " << forceNorm << '\n';
   auto line = [&](const char* name, double v) {
     out << "  " << name << ": ";
-    if (v < 0) out << "not run\n";
-    else out << v << '\n';
+    if (v < 0)
+      out << "not run\n";
+    else
+      out << v << '\n';
   };
   line("(a) energy gradient error", energyError);
   line("(a) its round-off allowance", energyNoise);
@@ -375,6 +417,9 @@ std::string ForceFieldTestReport::describe() const {
   line("(e) force under rigid motions", rigidMotionForce);
   line("(e) net force", netForce);
   line("(e) net moment", netMoment);
+  line("(f) damping (bFactor) vs finite differences in v", dampingError);
+  line("(f) its round-off allowance", dampingNoise);
+  line("(f) damping matrix vs addDForce", dampingMatrixError);
   return out.str();
 }
 
@@ -425,6 +470,10 @@ ForceFieldTestReport checkForceField(const SceneFactory& makeScene,
   expectBelow(r.systemMatrixError, options.roundOffTolerance,
               "(c) assembled system - matrix-free product", r);
   expectBelow(r.asymmetry, options.roundOffTolerance, "(c) asymmetry of K", r);
+  expectBelow(r.dampingError, options.tolerance + r.dampingNoise,
+              "(f) damping - finite differences in the velocities", r);
+  expectBelow(r.dampingMatrixError, options.roundOffTolerance,
+              "(f) addKToMatrix (bFactor) - addDForce (bFactor)", r);
   expectBelow(r.restForce, options.roundOffTolerance, "(d) force at rest", r);
   expectBelow(r.rigidMotionForce, options.roundOffTolerance, "(e) force under rigid motion", r);
   expectBelow(r.netForce, options.roundOffTolerance, "(e) net force", r);

@@ -20,6 +20,9 @@
 //   (d) rest:       f = 0 at the rest shape (zeroAtRest)
 //   (e) rigid:      f = 0 at R rest + t for rotations R and translations t, and at the perturbed
 //                   positions the forces sum to zero, as do their moments (rotationInvariant)
+//   (f) damping:    B dv (addDForce and addKToMatrix with bFactor 1, kFactor 0) = the central
+//                   difference of f in the velocities, about zero velocity (0 = 0 for a field
+//                   without damping)
 // The step h is fdStep times the typical spacing; a central difference then errs by about
 // fdStep^2 relative (truncation, held to `tolerance`) plus eps |f| / (fdStep |K dx|) (round-off,
 // estimated at each sample and allowed on top of the tolerance).
@@ -56,9 +59,9 @@ struct ForceFieldTestOptions {
   double perturbation = 0.1;
   /// Finite-difference step, relative to the typical spacing.
   double fdStep = 1e-5;
-  /// Relative error allowed for (a) and (b).
+  /// Relative error allowed for the finite-difference checks (a), (b) and (f).
   double tolerance = 1e-6;
-  /// Relative error allowed for (c), (d), (e): these hold to round-off.
+  /// Relative error allowed for (c), (d), (e) and the damping matrix: these hold to round-off.
   double roundOffTolerance = 1e-9;
   /// Number of random directions and vectors for each check.
   int samples = 3;
@@ -70,21 +73,24 @@ struct ForceFieldTestOptions {
 /// The measured errors, each relative to the scale named in its comment. A negative value
 /// means the check was not run (the option says the field does not have the property).
 struct ForceFieldTestReport {
-  std::string failure;            ///< non-empty when the test could not run (scene, field)
-  std::size_t dofs = 0;           ///< rows of the system
-  double spacing = 0;             ///< typical spacing of the points, the length scale
-  double forceNorm = 0;           ///< |f| at the perturbed positions, the force scale
-  double energyError = -1;        ///< (a) |f.dx + dE/dh| / (|f| |dx|)
-  double energyNoise = -1;        ///< (a) round-off of the difference of E, same scale
-  double dForceError = -1;        ///< (b) |K dx - FD| / max(|K dx|, |FD|)
-  double dForceNoise = -1;        ///< (b) round-off of the difference of f, same scale
-  double fieldMatrixError = -1;   ///< (c) |K_assembled u - K u| / |K u|, the field alone
-  double systemMatrixError = -1;  ///< (c) |A u - (matrix-free) u| / |A u|, the whole system
-  double asymmetry = -1;          ///< (c) |K - K^T| / |K| (Frobenius)
-  double restForce = -1;          ///< (d) |f(rest)| / |f(perturbed)|
-  double rigidMotionForce = -1;   ///< (e) max |f(R rest + t)| / |f(perturbed)|
-  double netForce = -1;           ///< (e) |sum f| / sum |f|, perturbed
-  double netMoment = -1;          ///< (e) |sum x x f (+ torques)| / sum |x| |f|, perturbed
+  std::string failure;             ///< non-empty when the test could not run (scene, field)
+  std::size_t dofs = 0;            ///< rows of the system
+  double spacing = 0;              ///< typical spacing of the points, the length scale
+  double forceNorm = 0;            ///< |f| at the perturbed positions, the force scale
+  double energyError = -1;         ///< (a) |f.dx + dE/dh| / (|f| |dx|)
+  double energyNoise = -1;         ///< (a) round-off of the difference of E, same scale
+  double dForceError = -1;         ///< (b) |K dx - FD| / max(|K dx|, |FD|)
+  double dForceNoise = -1;         ///< (b) round-off of the difference of f, same scale
+  double fieldMatrixError = -1;    ///< (c) |K_assembled u - K u| / |K u|, the field alone
+  double systemMatrixError = -1;   ///< (c) |A u - (matrix-free) u| / |A u|, the whole system
+  double asymmetry = -1;           ///< (c) |K - K^T| / |K| (Frobenius)
+  double dampingError = -1;        ///< (f) |B dv - FD in v| / max(|B dv|, |FD|)
+  double dampingNoise = -1;        ///< (f) round-off of that difference, same scale
+  double dampingMatrixError = -1;  ///< (f) |B_assembled u - B u| / |B u|
+  double restForce = -1;           ///< (d) |f(rest)| / |f(perturbed)|
+  double rigidMotionForce = -1;    ///< (e) max |f(R rest + t)| / |f(perturbed)|
+  double netForce = -1;            ///< (e) |sum f| / sum |f|, perturbed
+  double netMoment = -1;           ///< (e) |sum x x f (+ torques)| / sum |x| |f|, perturbed
   /// One line per measure, for test output.
   std::string describe() const;
 };

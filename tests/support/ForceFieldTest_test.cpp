@@ -3,14 +3,16 @@
 // energy, no stiffness), UniformMass (gravity), and a spring field written here; and, to show
 // that the test catches what it claims to, springs with one deliberate mistake each.
 #include "support/ForceFieldTest.h"
-#include "support/TestSprings.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <sstream>
 
 #include "core/Runtime.h"
+#include "core/Types.h"
 #include "simulation/Scene.h"
+#include "support/TestSprings.h"
 
 namespace stroma::test {
 namespace {
@@ -31,7 +33,8 @@ SceneFactory springScene(std::string springClass, std::string extra = "") {
   return [springClass, extra](Scene& scene) {
     auto& factory = scene.runtime().factory();
     factory.add("TestSprings", "test").with<CorrectSprings>();
-    factory.add("SpringsWithoutGeometricStiffness", "test").with<SpringsWithoutGeometricStiffness>();
+    factory.add("SpringsWithoutGeometricStiffness", "test")
+        .with<SpringsWithoutGeometricStiffness>();
     factory.add("SpringsWithWrongMatrixSign", "test").with<SpringsWithWrongMatrixSign>();
     factory.add("SpringsWithWrongEnergy", "test").with<SpringsWithWrongEnergy>();
     std::string edges;
@@ -39,7 +42,8 @@ SceneFactory springScene(std::string springClass, std::string extra = "") {
       for (int j = i + 1; j < 8; ++j) edges += std::to_string(i) + " " + std::to_string(j) + "  ";
     return scene.loadString(R"(<Node name="root" gravity="0 0 0">
       <MechanicalObject name="dofs" position="0 0 0  2 0 0  0 2 0  2 2 0  0 0 2  2 0 2  0 2 2  2 2 2"/>
-      <)" + springClass + R"( name="springs" stiffness="300" edges=")" + edges + R"("/>
+      <)" + springClass + R"( name="springs" stiffness="300" edges=")" +
+                            edges + R"("/>
       )" + extra + R"(
     </Node>)");
   };
@@ -73,6 +77,25 @@ TEST(ForceFieldTest, UniformMassGravityIsMinusTheGradientOfItsEnergy) {
       <UniformMass totalMass="4"/>
     </Node>)",
                   {.zeroAtRest = false});
+}
+
+TEST(ForceFieldTest, DampedSpringsOfTheSpringPlugin) {
+  // Every pair of the unit cube's corners, rest length their distance, stiffness 100 and
+  // damping 5: the damping check (f) compares B = kd e e^T with the velocity derivative.
+  const Vec3d corners[8] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0},
+                            {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}};
+  std::ostringstream springs;
+  springs.precision(17);
+  for (int i = 0; i < 8; ++i)
+    for (int j = i + 1; j < 8; ++j)
+      springs << i << ' ' << j << " 100 5 " << (corners[j] - corners[i]).norm() << "  ";
+  const auto r = checkForceField(R"(<Node name="root" gravity="0 0 0">
+      <MechanicalObject position="0 0 0  1 0 0  0 1 0  1 1 0  0 0 1  1 0 1  0 1 1  1 1 1"/>
+      <SpringForceField spring=")" + springs.str() +
+                                     R"("/>
+    </Node>)",
+                                 {.rotationInvariant = true});
+  EXPECT_LT(r.dampingError, 1e-8) << r.describe();
 }
 
 TEST(ForceFieldTest, CatchesAMissingGeometricStiffness) {

@@ -36,8 +36,7 @@ class TestSprings : public ForceField<Vec3Types> {
     }
   }
 
-  void addForce(const MechanicalParams&, VecDeriv& f, const VecCoord& x,
-                const VecDeriv&) override {
+  void addForce(const MechanicalParams&, VecDeriv& f, const VecCoord& x, const VecDeriv&) override {
     forEachSpring(x, [&](int i, int j, const Vec3d& u, double l, double l0) {
       const Vec3d fi = d_stiffness.value() * (l - l0) * u;
       f[i] += fi;

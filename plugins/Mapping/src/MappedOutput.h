@@ -43,8 +43,9 @@ struct SofaMappingOptions {
     if (!mechanicalOutput) return;
     for (const Data<bool>* d : {&isMechanical, &mapForces, &mapMasses})
       if (!d->value())
-        mapping.msgWarning(d->name() + "=false is not supported for a state output: its forces "
-                                       "and masses are mapped to the input",
+        mapping.msgWarning(d->name() +
+                               "=false is not supported for a state output: its forces "
+                               "and masses are mapped to the input",
                            d->name());
   }
 };
@@ -55,8 +56,8 @@ struct SofaMappingOptions {
 template <class Out>
 bool resizeOutput(MechanicalState<Out>& out, std::size_t n) {
   if (out.size() == n) return false;
-  for (VecId v : {VecId::position(), VecId::restPosition(), VecId::freePosition(),
-                  VecId::resetPosition()})
+  for (VecId v :
+       {VecId::position(), VecId::restPosition(), VecId::freePosition(), VecId::resetPosition()})
     out.writeCoord(v).resize(n, Out::zeroCoord());
   return true;
 }

@@ -21,10 +21,9 @@ bool RigidMapping::computeLocalPoints() {
   const auto& frames = input()->readCoord(VecId::position());
   const std::size_t nbFrames = frames.size();
   const bool given = !d_points.value().empty() || !d_initialPoints.value().empty();
-  const std::vector<Vec3d>& points =
-      !d_points.value().empty() ? d_points.value()
-      : given                   ? d_initialPoints.value()
-                                : output()->readCoord(VecId::position());
+  const std::vector<Vec3d>& points = !d_points.value().empty() ? d_points.value()
+                                     : given                   ? d_initialPoints.value()
+                                             : output()->readCoord(VecId::position());
   const std::size_t n = points.size();
   if (n == 0) msgWarning("maps no point: give points or positions to the output", "points");
 

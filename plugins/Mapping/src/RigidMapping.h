@@ -23,13 +23,14 @@ namespace stroma {
 /// stiffness (the change of J^T f with the rotation) is not included.
 class RigidMapping final : public Mapping<Rigid3Types, Vec3Types> {
  public:
-  Data<std::vector<Vec3d>> d_points{this, "points", {},
+  Data<std::vector<Vec3d>> d_points{this,
+                                    "points",
+                                    {},
                                     "Local coordinates of the mapped points in their frame "
                                     "(nbOutput x 3). Default: from the output's positions.",
                                     {.unit = "m"}};
-  Data<std::vector<Vec3d>> d_initialPoints{this, "initialPoints", {},
-                                           "Same as points (SOFA's name of the field).",
-                                           {.unit = "m"}};
+  Data<std::vector<Vec3d>> d_initialPoints{
+      this, "initialPoints", {}, "Same as points (SOFA's name of the field).", {.unit = "m"}};
   Data<unsigned> d_index{this, "index", 0,
                          "Frame of every point when rigidIndexPerPoint is empty."};
   Data<bool> d_indexFromEnd{this, "indexFromEnd", false,
@@ -41,7 +42,9 @@ class RigidMapping final : public Mapping<Rigid3Types, Vec3Types> {
                                    "(converted to the frames' local ones at init)."};
   Data<bool> d_useX0{this, "useX0", false,
                      "SOFA option, accepted: the local points are kept from init."};
-  Data<int> d_geometricStiffness{this, "geometricStiffness", 0,
+  Data<int> d_geometricStiffness{this,
+                                 "geometricStiffness",
+                                 0,
                                  "SOFA's geometric stiffness of the mapped forces (0 none, 1 "
                                  "non-symmetric, 2 symmetrized); only 0 is implemented.",
                                  {.min = 0.0, .max = 2.0}};

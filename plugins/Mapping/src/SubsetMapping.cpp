@@ -71,8 +71,9 @@ bool SubsetMapping::computeIndices() {
     return false;
   }
   if (missing)
-    msgWarning(std::to_string(missing) + " output points have no input point within radius; "
-               "they are dropped",
+    msgWarning(std::to_string(missing) +
+                   " output points have no input point within radius; "
+                   "they are dropped",
                "ignoreNotFound");
   d_indices.setValue(std::move(found));
   return true;

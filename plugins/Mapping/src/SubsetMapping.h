@@ -15,15 +15,24 @@ namespace stroma {
 class SubsetMapping final : public Mapping<Vec3Types, Vec3Types> {
  public:
   Data<std::vector<unsigned>> d_indices{
-      this, "indices", {},
+      this,
+      "indices",
+      {},
       "Input point of each output point (nbOutput). Default: first..last, else found by "
       "position."};
-  Data<int> d_first{this, "first", -1, "First input point of the subset when no indices are given.",
+  Data<int> d_first{this,
+                    "first",
+                    -1,
+                    "First input point of the subset when no indices are given.",
                     {.min = -1.0}};
-  Data<int> d_last{this, "last", -1,
+  Data<int> d_last{this,
+                   "last",
+                   -1,
                    "Last input point (included) of the subset when no indices are given.",
                    {.min = -1.0}};
-  Data<double> d_radius{this, "radius", 1e-5,
+  Data<double> d_radius{this,
+                        "radius",
+                        1e-5,
                         "Largest distance between an output point and the input point it is "
                         "matched to, when neither indices nor first/last are given.",
                         {.unit = "m", .min = 0.0}};

@@ -69,11 +69,13 @@ std::string loadedScene(bool loadOnTheCopy) {
       <CGLinearSolver iterations="100" tolerance="1e-14" threshold="1e-30"/>
       <MechanicalObject name="dofs" position="0 0 0  1 0 0  0 1 0"/>
       <UniformMass totalMass="3"/>
-      )" + (loadOnTheCopy ? "" : load) + R"(
+      )" +
+         (loadOnTheCopy ? "" : load) + R"(
       <Node name="Mapped">
         <MechanicalObject name="copy"/>
         <IdentityMapping input="@../dofs" output="@copy"/>
-        )" + (loadOnTheCopy ? load : "") + R"(
+        )" +
+         (loadOnTheCopy ? load : "") + R"(
       </Node>
     </Node>)";
 }
@@ -138,8 +140,9 @@ TEST(IdentityMapping, ReportsAMissingOrWrongInput) {
         <IdentityMapping input="@../frames"/>
       </Node>
     </Node>)"));
-  EXPECT_NE(problems(wrong.log()).find("/root/frames is a MechanicalObject Rigid3d, not a "
-                                       "mechanical state of template Vec3d"),
+  EXPECT_NE(problems(wrong.log())
+                .find("/root/frames is a MechanicalObject Rigid3d, not a "
+                      "mechanical state of template Vec3d"),
             std::string::npos)
       << problems(wrong.log());
 }

@@ -73,7 +73,8 @@ inline RigidCoord3 moved(const RigidCoord3& x, const RigidDeriv3& d, double h) {
   RigidCoord3 r = x;
   r.center += h * d.linear;
   const Vec3d w = h * d.angular;
-  if (w.norm() > 0) r.orientation = Quat(Eigen::AngleAxisd(w.norm(), w.normalized())) * x.orientation;
+  if (w.norm() > 0)
+    r.orientation = Quat(Eigen::AngleAxisd(w.norm(), w.normalized())) * x.orientation;
   return r;
 }
 /// The derivative that moves b to a (the inverse of moved with h = 1).
@@ -101,8 +102,8 @@ struct MappingCheckReport {
 /// Measures the three checks for `samples` random vectors. `length` scales the translations of
 /// the random directions (rotations are in radians); h = fdStep.
 template <class In, class Out>
-MappingCheckReport measureMapping(Mapping<In, Out>& mapping, double length = 1.0,
-                                  int samples = 4, double fdStep = 1e-6, unsigned seed = 7) {
+MappingCheckReport measureMapping(Mapping<In, Out>& mapping, double length = 1.0, int samples = 4,
+                                  double fdStep = 1e-6, unsigned seed = 7) {
   using InDeriv = typename In::Deriv;
   using OutDeriv = typename Out::Deriv;
   MappingCheckReport r;
@@ -180,8 +181,8 @@ void expectConsistentMapping(Mapping<In, Out>& mapping, double length = 1.0) {
 // --- The assembled system of a scene with mapped states ----------------------------------------
 
 struct SystemCheckReport {
-  double assembled = 0;     ///< max |A u - matrix-free u| / |A u|, A = m M + k K (J^T K J)
-  double stiffness = -1;    ///< max |K u - FD of the mapped forces| / |K u|; -1: not run
+  double assembled = 0;   ///< max |A u - matrix-free u| / |A u|, A = m M + k K (J^T K J)
+  double stiffness = -1;  ///< max |K u - FD of the mapped forces| / |K u|; -1: not run
 };
 
 /// On the MechanicalOperations of the scene's root: the assembled m M + k K (mapped parts as

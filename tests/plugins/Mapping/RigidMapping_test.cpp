@@ -16,10 +16,13 @@ const char* kFrames = "0.5 -1 2  0.2 0.3 0.1 0.9273618495495703   -1 0 1  0 0.6 
 
 std::string framesScene(const std::string& mappingAttributes, const std::string& output) {
   return std::string(R"(<Node name="root" gravity="0 0 0">
-      <MechanicalObject template="Rigid3" name="frames" position=")") + kFrames + R"("/>
+      <MechanicalObject template="Rigid3" name="frames" position=")") +
+         kFrames + R"("/>
       <Node name="Points">
-        <MechanicalObject name="points" )" + output + R"(/>
-        <RigidMapping )" + mappingAttributes + R"(/>
+        <MechanicalObject name="points" )" +
+         output + R"(/>
+        <RigidMapping )" +
+         mappingAttributes + R"(/>
       </Node>
     </Node>)";
 }
@@ -31,9 +34,9 @@ RigidCoord3 frameOf(const PointsOnFrames& m, unsigned k) {
 TEST(RigidMapping, WorldPositionsBecomeLocalPointsAndStayPut) {
   Runtime runtime;
   Scene scene(runtime);
-  ASSERT_TRUE(scene.loadString(framesScene(
-      R"(template="Rigid3,Vec3" rigidIndexPerPoint="0 0 1 1 1")",
-      R"(position="1 0 0  0 2 1  -1 -1 -1  3 0.5 0  0 0 0")")))
+  ASSERT_TRUE(
+      scene.loadString(framesScene(R"(template="Rigid3,Vec3" rigidIndexPerPoint="0 0 1 1 1")",
+                                   R"(position="1 0 0  0 2 1  -1 -1 -1  3 0.5 0  0 0 0")")))
       << problems(scene.log());
   EXPECT_EQ(problems(scene.log()), "");
   auto* mapping = findInScene<PointsOnFrames>(scene.root());
@@ -58,8 +61,8 @@ TEST(RigidMapping, LocalPointsAreTurnedAndMovedWithTheirFrame) {
   Scene scene(runtime);
   // globalToLocalCoords="false": the output positions are local coordinates; no template:
   // deduced from the Vec3d state beside the mapping.
-  ASSERT_TRUE(scene.loadString(framesScene(R"(globalToLocalCoords="false" index="1")",
-                                           R"(position="1 0 0  0 0 2")")))
+  ASSERT_TRUE(scene.loadString(
+      framesScene(R"(globalToLocalCoords="false" index="1")", R"(position="1 0 0  0 0 2")")))
       << problems(scene.log());
   auto* mapping = findInScene<PointsOnFrames>(scene.root());
   ASSERT_NE(mapping, nullptr);
@@ -74,7 +77,8 @@ TEST(RigidMapping, LocalPointsAreTurnedAndMovedWithTheirFrame) {
 TEST(RigidMapping, PointsFieldGivesTheOutputItsPoints) {
   Runtime runtime;
   Scene scene(runtime);
-  ASSERT_TRUE(scene.loadString(framesScene(R"(points="1 0 0  0 1 0  0 0 1" index="0" indexFromEnd="true")", "")))
+  ASSERT_TRUE(scene.loadString(
+      framesScene(R"(points="1 0 0  0 1 0  0 0 1" index="0" indexFromEnd="true")", "")))
       << problems(scene.log());
   auto* mapping = findInScene<PointsOnFrames>(scene.root());
   ASSERT_NE(mapping, nullptr);
@@ -96,8 +100,8 @@ TEST(RigidMapping, ReportsFramesOutOfRange) {
   EXPECT_NE(problems(a.log()).find("index 2 is out of range of the 2 input frames"),
             std::string::npos)
       << problems(a.log());
-  EXPECT_FALSE(b.loadString(framesScene(R"(rigidIndexPerPoint="0 3 7")",
-                                        R"(position="1 0 0  0 1 0  0 0 1")")));
+  EXPECT_FALSE(b.loadString(
+      framesScene(R"(rigidIndexPerPoint="0 3 7")", R"(position="1 0 0  0 1 0  0 0 1")")));
   EXPECT_NE(problems(b.log()).find("frames out of range of the 2 input frames: 3 7"),
             std::string::npos)
       << problems(b.log());
@@ -117,7 +121,8 @@ std::string bodyScene(const std::string& gravity, const std::string& extra) {
         <MechanicalObject name="points" position="1 2 3  2 2 3  1 3.5 3  1 2 5"/>
         <UniformMass vertexMass="0.5"/>
         <RigidMapping/>
-        )" + extra + R"(
+        )" +
+         extra + R"(
       </Node>
     </Node>)";
 }
@@ -144,8 +149,8 @@ TEST(RigidMapping, ABodyOfMappedMassesFallsWithoutTurning) {
 TEST(RigidMapping, AForceAtAPointGivesTheVelocityOfRigidBodyDynamics) {
   Runtime runtime;
   Scene scene(runtime);
-  ASSERT_TRUE(scene.loadString(
-      bodyScene("0 0 0", R"(<ConstantForceField indices="2" forces="3 -1 2"/>)")))
+  ASSERT_TRUE(
+      scene.loadString(bodyScene("0 0 0", R"(<ConstantForceField indices="2" forces="3 -1 2"/>)")))
       << problems(scene.log());
   auto* mapping = findInScene<PointsOnFrames>(scene.root());
   ASSERT_NE(mapping, nullptr);
@@ -181,7 +186,8 @@ TEST(RigidMapping, SpringsBetweenTwoFramesAssembleAsJTKJ) {
   runtime.factory().add("TestSprings", "test").with<CorrectSprings>();
   Scene scene(runtime);
   ASSERT_TRUE(scene.loadString(R"(<Node name="root" gravity="0 0 0">
-      <MechanicalObject template="Rigid3" name="frames" position=")" + std::string(kFrames) + R"("/>
+      <MechanicalObject template="Rigid3" name="frames" position=")" +
+                               std::string(kFrames) + R"("/>
       <Node name="Points">
         <MechanicalObject name="points" position="1 0 0  0 2 1  -1 -1 -1  3 0.5 0  0 0 0"/>
         <RigidMapping rigidIndexPerPoint="0 0 1 1 1"/>
@@ -199,8 +205,8 @@ TEST(RigidMapping, SpringsBetweenTwoFramesAssembleAsJTKJ) {
   auto* mapping = findInScene<PointsOnFrames>(scene.root());
   auto& frames = mapping->input()->writeCoord(VecId::position());
   frames[1].center += Vec3d(0.3, -0.1, 0.2);
-  frames[0].orientation = Quat(Eigen::AngleAxisd(0.4, Vec3d(1, 1, 0).normalized())) *
-                          frames[0].orientation;
+  frames[0].orientation =
+      Quat(Eigen::AngleAxisd(0.4, Vec3d(1, 1, 0).normalized())) * frames[0].orientation;
   r = measureSystem(scene, 0.0, 1.0, false);
   EXPECT_LT(r.assembled, 1e-14);
 }

@@ -12,12 +12,16 @@ using PointMapping = Mapping<Vec3Types, Vec3Types>;
 
 const char* kPoints = "0 0 0  1 0 0  0 1 0  0 0 1  1 1 1";
 
-std::string subsetScene(const std::string& mappingAttributes, const std::string& outputAttributes = "") {
+std::string subsetScene(const std::string& mappingAttributes,
+                        const std::string& outputAttributes = "") {
   return std::string(R"(<Node name="root">
-      <MechanicalObject name="dofs" position=")") + kPoints + R"("/>
+      <MechanicalObject name="dofs" position=")") +
+         kPoints + R"("/>
       <Node name="Subset">
-        <MechanicalObject name="subset" )" + outputAttributes + R"(/>
-        <SubsetMapping )" + mappingAttributes + R"(/>
+        <MechanicalObject name="subset" )" +
+         outputAttributes + R"(/>
+        <SubsetMapping )" +
+         mappingAttributes + R"(/>
       </Node>
     </Node>)";
 }
@@ -58,8 +62,7 @@ TEST(SubsetMapping, FirstAndLastSelectARange) {
 TEST(SubsetMapping, WithoutIndicesOutputPointsAreMatchedByPosition) {
   Runtime runtime;
   Scene scene(runtime);
-  ASSERT_TRUE(scene.loadString(
-      subsetScene(R"(radius="0.01")", R"(position="1 1 1.005  0 1 0")")))
+  ASSERT_TRUE(scene.loadString(subsetScene(R"(radius="0.01")", R"(position="1 1 1.005  0 1 0")")))
       << problems(scene.log());
   auto* mapping = findInScene<PointMapping>(scene.root());
   ASSERT_NE(mapping, nullptr);
@@ -89,13 +92,16 @@ std::string loadedScene(bool loadOnTheSubset) {
   return std::string(R"(<Node name="root" gravity="0 0 -1" dt="0.02">
       <EulerImplicitSolver/>
       <CGLinearSolver iterations="100" tolerance="1e-14" threshold="1e-30"/>
-      <MechanicalObject name="dofs" position=")") + kPoints + R"("/>
+      <MechanicalObject name="dofs" position=")") +
+         kPoints + R"("/>
       <UniformMass vertexMass="0.5"/>
-      )" + (loadOnTheSubset ? "" : onInput) + R"(
+      )" +
+         (loadOnTheSubset ? "" : onInput) + R"(
       <Node name="Subset">
         <MechanicalObject name="subset"/>
         <SubsetMapping indices="3 1"/>
-        )" + (loadOnTheSubset ? onSubset : "") + R"(
+        )" +
+         (loadOnTheSubset ? onSubset : "") + R"(
       </Node>
     </Node>)";
 }
