@@ -8,6 +8,7 @@ packages=(
   cmake ninja-build g++ ccache pkg-config
   libeigen3-dev libtinyxml2-dev libtbb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libsuitesparse-dev   # CHOLMOD, for the optional Cholmod plugin
   clang libclang-rt-14-dev   # libFuzzer and LeakSanitizer for the fuzz and leak tests
 )
 

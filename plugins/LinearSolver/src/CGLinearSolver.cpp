@@ -8,9 +8,27 @@
 
 namespace stroma {
 
+namespace {
+bool isAssembledTemplate(const std::string& name) {
+  return name.rfind("CompressedRowSparseMatrix", 0) == 0;
+}
+}  // namespace
+
+void CGLinearSolver::init() {
+  if (d_maxIter.isSet() && !d_iterations.isSet()) d_iterations.setValue(d_maxIter.value());
+  if (d_smallDenominatorThreshold.isSet() && !d_threshold.isSet())
+    d_threshold.setValue(d_smallDenominatorThreshold.value());
+  if (d_jacobiPreconditioner.value() && !isAssembledTemplate(templateName()))
+    msgWarning(
+        "the Jacobi preconditioner needs the assembled matrix: it is ignored with "
+        "template " +
+            templateName() + " (use template=\"CompressedRowSparseMatrixMat3x3d\")",
+        "jacobiPreconditioner");
+}
+
 LinearSolveReport CGLinearSolver::solve(MechanicalOperations& mop, const MechanicalParams& mp,
                                         VecId x, VecId rhs) {
-  const bool assembled = templateName().rfind("CompressedRowSparseMatrix", 0) == 0;
+  const bool assembled = isAssembledTemplate(templateName());
   LinearSolveReport r =
       assembled ? solveAssembled(mop, mp, x, rhs) : solveMatrixFree(mop, mp, x, rhs);
   report(r);
@@ -18,8 +36,7 @@ LinearSolveReport CGLinearSolver::solve(MechanicalOperations& mop, const Mechani
 }
 
 LinearSolveReport CGLinearSolver::solveMatrixFree(MechanicalOperations& mop,
-                                                  const MechanicalParams& mp, VecId x,
-                                                  VecId rhs) {
+                                                  const MechanicalParams& mp, VecId x, VecId rhs) {
   ScopedPhase phase(mop.timing(), "linearSolve");
   LinearSolveReport report;
   const VecId r = mop.allocDeriv(), p = mop.allocDeriv(), q = mop.allocDeriv();
@@ -68,15 +85,16 @@ LinearSolveReport CGLinearSolver::solveMatrixFree(MechanicalOperations& mop,
 }
 
 LinearSolveReport CGLinearSolver::solveAssembled(MechanicalOperations& mop,
-                                                 const MechanicalParams& mp, VecId x,
-                                                 VecId rhs) {
+                                                 const MechanicalParams& mp, VecId x, VecId rhs) {
   mop.assemble(mp, m_matrix);
   ScopedPhase phase(mop.timing(), "linearSolve");
   const Eigen::SparseMatrix<double>& A = m_matrix.matrix();
   Eigen::VectorXd b, solution;
   mop.gather(rhs, b);
-  if (d_warmStart.value()) mop.gather(x, solution);
-  else solution = Eigen::VectorXd::Zero(b.size());
+  if (d_warmStart.value())
+    mop.gather(x, solution);
+  else
+    solution = Eigen::VectorXd::Zero(b.size());
   Eigen::VectorXd inverseDiagonal = Eigen::VectorXd::Ones(b.size());
   if (d_jacobiPreconditioner.value()) {
     const Eigen::VectorXd d = A.diagonal();

@@ -1,15 +1,27 @@
 // SPDX-License-Identifier: MIT
 #include "CGLinearSolver.h"
+#include "SparseLDLSolver.h"
 #include "core/Plugin.h"
 
 namespace {
 
 void registerComponents(stroma::PluginRegistry& registry) {
   using namespace stroma;
+  // SOFA scenes also write the assembled templates without their precision suffix
+  // ("CompressedRowSparseMatrixMat3x3"), which means double there as here.
   registry.add("CGLinearSolver", "Conjugate gradient, matrix-free or on the assembled matrix")
       .with<CGLinearSolver>("GraphScattered")
       .with<CGLinearSolver>("CompressedRowSparseMatrixMat3x3d")
-      .with<CGLinearSolver>("CompressedRowSparseMatrixd");
+      .with<CGLinearSolver>("CompressedRowSparseMatrixd")
+      .with<CGLinearSolver>("CompressedRowSparseMatrixMat3x3")
+      .with<CGLinearSolver>("CompressedRowSparseMatrix");
+  registry.add("SparseLDLSolver", "Direct sparse LDL^T solver (Eigen SimplicialLDLT)")
+      .with<SparseLDLSolver>("CompressedRowSparseMatrixd")
+      .with<SparseLDLSolver>("CompressedRowSparseMatrixMat3x3d")
+      .with<SparseLDLSolver>("CompressedRowSparseMatrix")
+      .with<SparseLDLSolver>("CompressedRowSparseMatrixMat3x3")
+      .alias("EigenSimplicialLDLT")
+      .alias("EigenSimplicialLLT");
 }
 
 }  // namespace

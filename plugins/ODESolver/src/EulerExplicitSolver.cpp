@@ -1,19 +1,44 @@
 // SPDX-License-Identifier: MIT
 #include "EulerExplicitSolver.h"
 
+#include <algorithm>
+
+#include "StepChecks.h"
+#include "core/Node.h"
+#include "simulation/Mass.h"
 #include "simulation/MechanicalOperations.h"
 
 namespace stroma {
 
+void EulerExplicitSolver::init() {
+  if (!l_linearSolver && node()) l_linearSolver.set(node()->get<LinearSolver>());
+}
+
 void EulerExplicitSolver::solve(MechanicalOperations& mop, double dt) {
-  if (!mop.hasState()) return;
+  if (!mop.hasState() || !checkTimeStep(*this, dt)) return;
+  ++m_step;
   const VecId x = VecId::position(), v = VecId::velocity(), f = VecId::force();
   MechanicalParams mp;
   mp.dt = dt;
   mop.computeForce(mp, f);
   const VecId a = mop.allocDeriv();
-  if (!mop.accFromF(a, f)) return;
+
+  // a = M^-1 f: a division for lumped masses, a linear solve otherwise.
+  const auto& masses = mop.masses();
+  const bool lumped =
+      std::all_of(masses.begin(), masses.end(), [](const BaseMass* m) { return m->isDiagonal(); });
+  if (lumped || !l_linearSolver) {
+    if (!mop.accFromF(a, f)) return;
+  } else {
+    mop.projectResponse(f);
+    MechanicalParams massOnly;
+    massOnly.dt = dt;
+    massOnly.mFactor = 1.0;
+    massOnly.kFactor = 0.0;
+    l_linearSolver->solve(mop, massOnly, a, f);
+  }
   mop.projectResponse(a);
+
   if (d_symplectic.value()) {
     mop.vOp(v, v, a, dt);  // v += h a
     mop.vOp(x, x, v, dt);  // x += h v_{n+1}
@@ -23,8 +48,7 @@ void EulerExplicitSolver::solve(MechanicalOperations& mop, double dt) {
   }
   mop.projectPosition(x);
   mop.projectVelocity(v);
-  if (mop.checkFinite(x, "position", *this)) mop.checkFinite(v, "velocity", *this);
-  mop.propagate(x, v);
+  finishStep(mop, *this, m_step);
 }
 
 }  // namespace stroma

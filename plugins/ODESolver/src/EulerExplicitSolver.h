@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "core/Link.h"
 #include "simulation/Solvers.h"
 
 namespace stroma {
@@ -8,18 +9,28 @@ namespace stroma {
 /// Explicit Euler (SOFA's EulerExplicitSolver). With symplectic="true" (the default), the
 /// semi-implicit (symplectic) Euler scheme:
 ///   a = M^-1 f(x_n, v_n),  v_{n+1} = v_n + h a,  x_{n+1} = x_n + h v_{n+1};
-/// otherwise forward Euler, x_{n+1} = x_n + h v_n. Needs lumped masses. Stable only below the
-/// Courant time step of the stiffest element.
+/// otherwise forward Euler, x_{n+1} = x_n + h v_n. With lumped masses M^-1 f is a division per
+/// degree of freedom; with a non-diagonal mass (MeshMatrixMass without lumping) M a = f is
+/// solved by the node's linear solver. Stable only below the Courant time step of the stiffest
+/// element.
 class EulerExplicitSolver final : public OdeSolver {
  public:
   Data<bool> d_symplectic{this, "symplectic", true,
                           "Semi-implicit (symplectic) Euler: positions use the new velocities."};
   Data<bool> d_optimizedForDiagonalMatrix{this, "optimizedForDiagonalMatrix", true,
-                                          "SOFA option, accepted: lumped masses are required."};
+                                          "SOFA option, accepted: lumped masses are inverted "
+                                          "directly, other masses through the linear solver."};
   Data<bool> d_threadSafeVisitor{this, "threadSafeVisitor", false,
                                  "SOFA option, accepted and without effect."};
+  Link<LinearSolver> l_linearSolver{this, "linearSolver",
+                                    "Linear solver for a non-diagonal mass (default: the "
+                                    "node's, when there is one)."};
 
+  void init() override;
   void solve(MechanicalOperations& mop, double dt) override;
+
+ private:
+  long long m_step = 0;
 };
 
 }  // namespace stroma

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "StepChecks.h"
 #include "core/Node.h"
 #include "simulation/MechanicalOperations.h"
 
@@ -18,11 +19,35 @@ void EulerImplicitSolver::init() {
              "linearSolver");
 }
 
+void EulerImplicitSolver::computeResidual(MechanicalOperations& mop, double h, VecId r, VecId mvn) {
+  const VecId x = VecId::position(), v = VecId::velocity(), f = VecId::force();
+  mop.propagate(x, v);
+  MechanicalParams mp;
+  mp.dt = h;
+  mop.computeForce(mp, f);
+  MechanicalParams terms;
+  terms.dt = h;
+  if (d_firstOrder.value()) {
+    terms.mFactor = -h;  // -M (x - x_n) = -h M v
+    terms.kFactor = 0;
+    mop.computeMBKdx(terms, r, v);
+  } else {
+    terms.mFactor = -(1.0 + h * d_rayleighMass.value());
+    terms.kFactor = h * d_rayleighStiffness.value();
+    mop.computeMBKdx(terms, r, v);
+    mop.vOp(r, r, mvn, 1.0);
+  }
+  mop.vOp(r, r, f, h);
+  mop.projectResponse(r);
+}
+
 void EulerImplicitSolver::solve(MechanicalOperations& mop, double dt) {
-  if (!mop.hasState()) return;
+  if (!mop.hasState() || !checkTimeStep(*this, dt)) return;
+  ++m_step;
   const double h = dt;
   const double rm = d_rayleighMass.value(), rs = d_rayleighStiffness.value();
-  const double tr = 1.0;  // backward Euler
+  const bool firstOrder = d_firstOrder.value();
+  const int newtonIterations = d_newtonIterations.value();
   const VecId x = VecId::position(), v = VecId::velocity(), f = VecId::force();
   const VecId b = mop.allocDeriv(), dv = mop.allocDeriv(), tmp = mop.allocDeriv();
 
@@ -31,37 +56,93 @@ void EulerImplicitSolver::solve(MechanicalOperations& mop, double dt) {
   mp.dt = h;
   mop.computeForce(mp, f);
   mop.vOp(b, VecId::null(), f, h);
-  if (!d_firstOrder.value()) {
+  if (!firstOrder) {
     MechanicalParams damping;
     damping.mFactor = -rm;
-    damping.kFactor = tr * h + rs;
+    damping.kFactor = h + rs;
     mop.computeMBKdx(damping, tmp, v);
     mop.vOp(b, b, tmp, h);
   }
   mop.projectResponse(b);
 
-  // Matrix: (1 + h rm) M - h (tr h + rs) K   (first order: M - h K).
+  // Matrix: (1 + h rm) M - h (h + rs) K   (first order: M - h K).
   MechanicalParams matrix;
   matrix.dt = h;
-  matrix.mFactor = d_firstOrder.value() ? 1.0 : 1.0 + tr * h * rm;
-  matrix.kFactor = d_firstOrder.value() ? -h * tr : -h * (tr * h + rs);
+  matrix.mFactor = firstOrder ? 1.0 : 1.0 + h * rm;
+  matrix.kFactor = firstOrder ? -h : -h * (h + rs);
   matrix.bFactor = 0;
+
+  // M v_n, for the residuals of the Newton iterations.
+  VecId mvn = VecId::null();
+  if (newtonIterations > 1 || d_computeResidual.value()) {
+    mvn = mop.allocDeriv();
+    MechanicalParams massOnly;
+    massOnly.mFactor = 1.0;
+    massOnly.kFactor = 0.0;
+    mop.computeMBKdx(massOnly, mvn, v);
+  }
+  const double normB = mop.norm(b);
+  const double scale = normB > 0 ? normB : 1.0;
+
+  // Linearized step.
   mop.vOp(dv, VecId::null(), VecId::null(), 0.0);
   l_linearSolver->solve(mop, matrix, dv, b);
-
-  // Integration.
-  if (d_firstOrder.value()) {
+  if (firstOrder) {
     mop.vOp(v, VecId::null(), dv, 1.0 / h);
     mop.vOp(x, x, dv, 1.0);
   } else {
     mop.vOp(v, v, dv, 1.0);
     mop.vOp(x, x, v, h);
   }
+  int solves = 1;
+
+  // Newton iterations on the residual, x and v moving together (dx = h dv).
+  double residual = -1;
+  if (newtonIterations > 1) {
+    while (true) {
+      computeResidual(mop, h, tmp, mvn);
+      residual = mop.norm(tmp) / scale;
+      if (residual <= d_newtonTolerance.value() || solves >= newtonIterations) break;
+      mop.vOp(dv, VecId::null(), VecId::null(), 0.0);
+      l_linearSolver->solve(mop, matrix, dv, tmp);
+      if (firstOrder) {
+        mop.vOp(x, x, dv, 1.0);
+        mop.vOp(v, v, dv, 1.0 / h);
+      } else {
+        mop.vOp(v, v, dv, 1.0);
+        mop.vOp(x, x, dv, h);
+      }
+      ++solves;
+    }
+    if (residual > d_newtonTolerance.value() && m_unconverged++ == 0)
+      msgWarning("Newton did not converge in " + std::to_string(solves) + " iterations at step " +
+                     std::to_string(m_step) + ": relative residual " + std::to_string(residual) +
+                     " > newtonTolerance " + std::to_string(d_newtonTolerance.value()) +
+                     " (raise newtonIterations or lower dt); later ones are counted",
+                 "newtonIterations");
+  } else if (d_computeResidual.value()) {
+    computeResidual(mop, h, tmp, mvn);
+    residual = mop.norm(tmp) / scale;
+  }
+  d_lastIterations.setValue(solves);
+  if (residual >= 0) {
+    d_lastResidual.setValue(residual);
+    if (d_printLog.value())
+      msgInfo("step " + std::to_string(m_step) + ": " + std::to_string(solves) +
+              " linear solve(s), relative residual " + std::to_string(residual));
+  }
+
   if (d_vdamping.value() > 0) mop.vOp(v, VecId::null(), v, std::exp(-h * d_vdamping.value()));
   mop.projectPosition(x);
   mop.projectVelocity(v);
-  if (mop.checkFinite(x, "position", *this)) mop.checkFinite(v, "velocity", *this);
-  mop.propagate(x, v);
+  finishStep(mop, *this, m_step);
+}
+
+void EulerImplicitSolver::cleanup() {
+  if (m_unconverged > 1)
+    msgWarning("Newton did not converge in " + std::to_string(m_unconverged) + " of " +
+                   std::to_string(m_step) + " steps",
+               "newtonIterations");
 }
 
 }  // namespace stroma

@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: MIT
+#include "CentralDifferenceSolver.h"
 #include "EulerExplicitSolver.h"
 #include "EulerImplicitSolver.h"
+#include "NewmarkImplicitSolver.h"
+#include "NewtonRaphsonSolver.h"
+#include "RungeKutta4Solver.h"
+#include "StaticSolver.h"
 #include "core/Plugin.h"
 
 namespace {
@@ -9,9 +14,23 @@ void registerComponents(stroma::PluginRegistry& registry) {
   using namespace stroma;
   registry.add("EulerExplicitSolver", "Explicit (symplectic by default) Euler integration")
       .with<EulerExplicitSolver>();
-  registry.add("EulerImplicitSolver", "Implicit Euler with Rayleigh damping")
+  registry
+      .add("EulerImplicitSolver",
+           "Implicit Euler with Rayleigh damping, linearized or with Newton iterations")
       .with<EulerImplicitSolver>()
       .alias("EulerImplicit");
+  registry
+      .add("CentralDifferenceSolver",
+           "Explicit central differences (leapfrog) with Rayleigh mass damping")
+      .with<CentralDifferenceSolver>();
+  registry.add("RungeKutta4Solver", "Classic explicit fourth-order Runge-Kutta")
+      .with<RungeKutta4Solver>();
+  registry.add("NewmarkImplicitSolver", "Newmark beta implicit integration (average acceleration)")
+      .with<NewmarkImplicitSolver>();
+  registry.add("StaticSolver", "Static equilibrium by Newton-Raphson with a line search")
+      .with<StaticSolver>();
+  registry.add("NewtonRaphsonSolver", "Newton-Raphson parameters for StaticSolver (newtonSolver)")
+      .with<NewtonRaphsonSolver>();
 }
 
 }  // namespace

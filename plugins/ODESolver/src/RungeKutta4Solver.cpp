@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+#include "RungeKutta4Solver.h"
+
+#include "StepChecks.h"
+#include "simulation/MechanicalOperations.h"
+
+namespace stroma {
+
+namespace {
+
+// a = M^-1 f(x, v) at a stage state, mapped states updated first.
+bool acceleration(MechanicalOperations& mop, double h, VecId x, VecId v, VecId a) {
+  mop.propagate(x, v);
+  MechanicalParams mp;
+  mp.dt = h;
+  mp.x = x;
+  mp.v = v;
+  mop.computeForce(mp, VecId::force());
+  if (!mop.accFromF(a, VecId::force())) return false;
+  mop.projectResponse(a);
+  return true;
+}
+
+}  // namespace
+
+void RungeKutta4Solver::solve(MechanicalOperations& mop, double dt) {
+  if (!mop.hasState() || !checkTimeStep(*this, dt)) return;
+  ++m_step;
+  const double h = dt;
+  const VecId x = VecId::position(), v = VecId::velocity();
+  const VecId xs = mop.allocCoord(), vs = mop.allocDeriv(), a = mop.allocDeriv();
+  const VecId sumV = mop.allocDeriv(), sumA = mop.allocDeriv();
+
+  // k1 = (v_n, a(x_n, v_n)).
+  if (!acceleration(mop, h, x, v, a)) return;
+  mop.vOp(sumV, v);
+  mop.vOp(sumA, a);
+  mop.vOp(xs, x, v, h / 2);
+  mop.vOp(vs, v, a, h / 2);
+  // k2 and k3 at the half step, weights 2; stage states y_n + c h k.
+  for (const double c : {0.5, 1.0}) {
+    if (!acceleration(mop, h, xs, vs, a)) return;
+    mop.vOp(sumV, sumV, vs, 2.0);
+    mop.vOp(sumA, sumA, a, 2.0);
+    mop.vOp(xs, x, vs, c * h);  // uses this stage's velocity before it is replaced
+    mop.vOp(vs, v, a, c * h);
+  }
+  // k4 at the full step.
+  if (!acceleration(mop, h, xs, vs, a)) return;
+  mop.vOp(sumV, sumV, vs);
+  mop.vOp(sumA, sumA, a);
+
+  mop.vOp(x, x, sumV, h / 6);
+  mop.vOp(v, v, sumA, h / 6);
+  mop.projectPosition(x);
+  mop.projectVelocity(v);
+  finishStep(mop, *this, m_step);
+}
+
+}  // namespace stroma

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// Checks shared by every time integrator: a usable time step before the step, finite positions
+// and velocities after it. Free functions rather than a base class (STYLE.md section 4).
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "core/Base.h"
+#include "simulation/MechanicalOperations.h"
+
+namespace stroma {
+
+/// Reports a time step that is not a positive finite number as an error of `solver` (which
+/// stops the run with exit code 1) and returns false.
+inline bool checkTimeStep(Base& solver, double dt) {
+  if (dt > 0 && std::isfinite(dt)) return true;
+  char value[32];
+  std::snprintf(value, sizeof value, "%g", dt);
+  solver.msgError("the time step dt = " + std::string(value) +
+                      " s is not positive: set a positive dt on the root node or on this "
+                      "solver's node",
+                  "dt");
+  return false;
+}
+
+/// After a step: reports non-finite positions or velocities (naming the solver's step number,
+/// the time, the state and the index) and returns false; otherwise propagates the new state
+/// to the mapped states and returns true.
+inline bool finishStep(MechanicalOperations& mop, Base& solver, long long step) {
+  const VecId x = VecId::position(), v = VecId::velocity();
+  const std::string when = " after step " + std::to_string(step);
+  if (!mop.checkFinite(x, "position" + when, solver)) return false;
+  if (!mop.checkFinite(v, "velocity" + when, solver)) return false;
+  mop.propagate(x, v);
+  return true;
+}
+
+}  // namespace stroma

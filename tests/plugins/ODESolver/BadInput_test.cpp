@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: MIT
+// Every ODE solver refuses a time step <= 0 and stops a run whose state becomes NaN or
+// infinite, with an error naming the step and the state; `stroma run` then exits with 1.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "SolverTestSupport.h"
+
+namespace stroma::test {
+namespace {
+
+struct SolverCase {
+  std::string className;
+  std::string xml;  ///< the solver components
+};
+
+std::string caseName(const testing::TestParamInfo<SolverCase>& info) {
+  return info.param.className;
+}
+
+class EverySolver : public testing::TestWithParam<SolverCase> {};
+
+TEST_P(EverySolver, RefusesAZeroTimeStep) {
+  SolverScene s(oscillatorScene(GetParam().xml, 100.0, 1.0, "1 0 0", "0 0 0", 0.0));
+  ASSERT_TRUE(s.loaded()) << s.log();
+  EXPECT_FALSE(s.step());
+  const Message m = findError(s.scene().log(), "time step");
+  EXPECT_NE(m.text.find("dt = 0"), std::string::npos) << s.log();
+  EXPECT_EQ(m.field, "dt");
+  EXPECT_EQ(m.componentClass, GetParam().className);
+  EXPECT_EQ(s.position(0), Vec3d(1, 0, 0));  // nothing moved
+}
+
+TEST_P(EverySolver, StopsAtANonFiniteStateNamingTheStepAndTheState) {
+  SolverScene s(oscillatorScene(GetParam().xml, 100.0, 1.0, "1 0 0  2 0 0", "0 0 0  0 0 0", 0.01));
+  ASSERT_TRUE(s.loaded()) << s.log();
+  ASSERT_TRUE(s.step()) << s.log();
+  ASSERT_TRUE(s.step()) << s.log();
+  s.state().writeCoord(VecId::position())[1].y() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(s.step());
+  const Message m = findError(s.scene().log(), "diverged");
+  EXPECT_NE(m.text.find("after step 3 of /root/Body/dofs is not finite at index 1"),
+            std::string::npos)
+      << s.log();
+  EXPECT_EQ(m.componentClass, GetParam().className);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    ODESolver, EverySolver,
+    testing::Values(SolverCase{"EulerExplicitSolver", "<EulerExplicitSolver/>"},
+                    SolverCase{"EulerImplicitSolver", "<EulerImplicitSolver/><SparseLDLSolver/>"},
+                    SolverCase{"CentralDifferenceSolver", "<CentralDifferenceSolver/>"},
+                    SolverCase{"RungeKutta4Solver", "<RungeKutta4Solver/>"},
+                    SolverCase{"NewmarkImplicitSolver",
+                               "<NewmarkImplicitSolver/><SparseLDLSolver/>"},
+                    SolverCase{"StaticSolver", "<StaticSolver/><SparseLDLSolver/>"}),
+    caseName);
+
+TEST(ImplicitSolvers, NeedALinearSolver) {
+  for (const std::string solver :
+       {"EulerImplicitSolver", "NewmarkImplicitSolver", "StaticSolver"}) {
+    SolverScene s(oscillatorScene("<" + solver + "/>", 100.0, 1.0));
+    EXPECT_FALSE(s.loaded());
+    const Message m = findError(s.scene().log(), "needs a linear solver");
+    EXPECT_EQ(m.componentClass, solver) << s.log();
+    EXPECT_EQ(m.field, "linearSolver");
+  }
+}
+
+// `stroma run` on a scene that overflows at the first step, and on one with dt = 0.
+int runCli(const std::string& xml, std::string& output) {
+  TempDir dir;
+  const auto scene = dir.write("scene.scn", xml);
+  const auto log = dir.path() / "log.txt";
+  const std::string command = std::string("\"") + STROMA_CLI + "\" run \"" + scene.string() +
+                              "\" -n 5 > \"" + log.string() + "\" 2>&1";
+  const int status = std::system(command.c_str());
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  output = text.str();
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(StromaRun, ExitsWith1WhenTheSimulationDiverges) {
+  // a = 1e300 N / 1e-300 kg overflows: the velocity and then the position are infinite.
+  std::string output;
+  const int code = runCli(R"(<Node name="root" dt="0.01" gravity="0 0 0">
+  <Node name="Body">
+    <EulerExplicitSolver/>
+    <MechanicalObject name="dofs" position="0 0 0"/>
+    <UniformMass vertexMass="1e-300"/>
+    <ConstantForceField force="1e300 0 0"/>
+  </Node>
+</Node>)",
+                          output);
+  EXPECT_EQ(code, 1) << output;
+  EXPECT_NE(output.find("position after step 1 of /root/Body/dofs is not finite"),
+            std::string::npos)
+      << output;
+}
+
+TEST(StromaRun, ExitsWith1WhenTheTimeStepIsZero) {
+  std::string output;
+  const int code = runCli(R"(<Node name="root" dt="0" gravity="0 0 0">
+  <Node name="Body">
+    <RungeKutta4Solver/>
+    <MechanicalObject name="dofs" position="0 0 0"/>
+    <UniformMass vertexMass="1"/>
+  </Node>
+</Node>)",
+                          output);
+  EXPECT_EQ(code, 1) << output;
+  EXPECT_NE(output.find("dt = 0"), std::string::npos) << output;
+}
+
+}  // namespace
+}  // namespace stroma::test
