@@ -1,0 +1,278 @@
+// SPDX-License-Identifier: MIT
+// CorotationalElements<Element>: the per-element arrays and the parallel loops that the
+// corotational FEM force fields share (TetrahedronFEMForceField, HexahedronFEMForceField,
+// HexahedronFEMForceFieldAndMass). It wires the kernels of SolidMechanics/kernels
+// (CorotationalElement.h: f = -R Ke (R^T x - X), df = -R Ke R^T dx, E = 1/2 u^T Ke u) to state
+// vectors, and knows nothing of Data, nodes or messages: the components own one and report.
+//
+// Layout. Per-element constants (rest shape, Ke, rest frame) are computed once into one
+// contiguous array; rotations and per-corner results are arrays of the step, sized once.
+//
+// Determinism. Every loop over elements writes only its own element's slots (its rotation, the
+// N "corner" vectors of its result); a second loop over vertices then sums, for each vertex,
+// the corners of the elements around it in increasing element order (the vertex -> corners
+// adjacency built at setElements). No two threads write the same value and every sum has a
+// fixed order, so the results are bit-for-bit the same for any thread count.
+//
+// Rotations. addForce computes each element's rotation at the positions it is given and keeps
+// it; addDForce and addKToMatrix of the same step use those rotations (the linearization point
+// of an implicit step is where the forces were last computed), as SOFA does.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "SolidMechanics/kernels/CorotationalElement.h"
+#include "SolidMechanics/kernels/CorotationalHexahedron.h"
+#include "SolidMechanics/kernels/CorotationalTetrahedron.h"
+#include "SolidMechanics/kernels/IsotropicMaterial.h"
+#include "core/ThreadPool.h"
+#include "core/Types.h"
+#include "linalg/AssembledMatrix.h"
+#include "topology/TopologyTypes.h"
+
+namespace stroma {
+
+template <class Element>
+class CorotationalElements {
+ public:
+  static constexpr int N = Element::nodeCount;
+  using Vectors = typename Element::Vectors;
+  using Indices = std::array<Index, N>;
+  using Matrix = fem::ElementMatrix<N>;
+
+  static_assert(N == 4 || N == 8,
+                "CorotationalElements takes fem::CorotationalTetrahedron or "
+                "fem::CorotationalHexahedron.");
+
+  /// Elements per task of the parallel loops: a corotational element costs 0.1 to 1 us, so a
+  /// task of 128 elements pays for its scheduling.
+  static constexpr std::size_t kGrain = 128;
+  /// Elements whose stiffness matrices are computed together (in parallel) before being added
+  /// to the (sequential) matrix accumulator: bounds the scratch to kMatrixBatch matrices.
+  static constexpr std::size_t kMatrixBatch = 512;
+
+  /// What computeConstants found in the rest shape, as element indices in increasing order.
+  struct RestShapeReport {
+    std::vector<Index> degenerate;  ///< (nearly) zero volume: the element is left out (Ke = 0)
+    std::vector<Index> inverted;    ///< negative volume (vertex order): used with |V|
+  };
+
+  /// Takes the elements (indices < pointCount, checked by the caller) and builds the vertex
+  /// adjacency and the arrays of the step. Allocates; call from init.
+  void setElements(std::span<const Indices> elements, std::size_t pointCount) {
+    m_elements.assign(elements.begin(), elements.end());
+    const std::size_t count = m_elements.size();
+    m_constants.assign(count, Element{});
+    m_rotations.assign(count, Eigen::Matrix3d::Identity());
+    m_corners.assign(count * N, Vec3d::Zero());
+    m_matrices.clear();
+    m_degenerate.assign(count, 0);
+    // Vertex -> corners (e * N + local), by a counting sort: increasing element order.
+    m_vertexOffsets.assign(pointCount + 1, 0);
+    for (const Indices& element : m_elements)
+      for (Index v : element) ++m_vertexOffsets[v + 1];
+    for (std::size_t v = 0; v < pointCount; ++v) m_vertexOffsets[v + 1] += m_vertexOffsets[v];
+    m_vertexCorners.resize(m_vertexOffsets[pointCount]);
+    std::vector<Index> next(m_vertexOffsets.begin(), m_vertexOffsets.end() - 1);
+    for (std::size_t e = 0; e < count; ++e)
+      for (int i = 0; i < N; ++i)
+        m_vertexCorners[next[m_elements[e][i]]++] = static_cast<Index>(e * N + i);
+  }
+
+  std::size_t size() const { return m_elements.size(); }
+  std::size_t pointCount() const { return m_vertexOffsets.size() - 1; }
+  const std::vector<Indices>& elements() const { return m_elements; }
+  const std::vector<Element>& constants() const { return m_constants; }
+  /// The rotation of each element at the positions of the last addForce (or updateRotations).
+  const std::vector<Eigen::Matrix3d>& rotations() const { return m_rotations; }
+
+  /// Computes every element's constants from the rest positions, the Young modulus (one value,
+  /// or one per element) and Poisson's ratio (both valid: checked by the caller). Degenerate
+  /// elements get Ke = 0 and are listed. No allocation besides the report.
+  RestShapeReport computeConstants(std::span<const Vec3d> rest,
+                                   std::span<const double> youngModulus, double poissonRatio,
+                                   const ThreadPool& pool) {
+    const bool uniform = youngModulus.size() == 1;
+    const fem::Matrix6d uniformC =
+        fem::computeElasticityMatrix(fem::computeLameParameters(youngModulus[0], poissonRatio));
+    std::vector<char>& degenerate = m_degenerate;
+    degenerate.assign(size(), 0);
+    pool.parallelFor(size(), kGrain, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t e = begin; e < end; ++e) {
+        const fem::Matrix6d C = uniform ? uniformC
+                                        : fem::computeElasticityMatrix(fem::computeLameParameters(
+                                              youngModulus[e], poissonRatio));
+        const Vectors X = gather(rest, e);
+        Element& element = m_constants[e];
+        fem::ElementStatus status;
+        if constexpr (N == 4)
+          status = fem::computeCorotationalTetrahedron(X, C, element);
+        else
+          status = fem::computeCorotationalHexahedron(X, C, element);
+        if (status != fem::ElementStatus::ok) {
+          // Left out of the mechanics: zero stiffness, rest shape kept for the rotations.
+          element = Element{};
+          element.restPositions = X;
+          degenerate[e] = 1;
+        }
+      }
+    });
+    RestShapeReport report;
+    for (std::size_t e = 0; e < size(); ++e) {
+      if (degenerate[e])
+        report.degenerate.push_back(static_cast<Index>(e));
+      else if (m_constants[e].restVolume < 0)
+        report.inverted.push_back(static_cast<Index>(e));
+    }
+    return report;
+  }
+
+  /// Rotations at positions x, without forces (at init, so that addDForce is defined before
+  /// the first addForce).
+  void updateRotations(fem::RotationMethod method, std::span<const Vec3d> x,
+                       const ThreadPool& pool) {
+    pool.parallelFor(size(), kGrain, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t e = begin; e < end; ++e)
+        m_rotations[e] = fem::computeRotation(method, m_constants[e], gather(x, e));
+    });
+  }
+
+  /// f += elastic forces at x (N); keeps the rotations.
+  void addForce(fem::RotationMethod method, std::span<const Vec3d> x, std::span<Vec3d> f,
+                const ThreadPool& pool) {
+    forEachElement(pool, [&](std::size_t e, Eigen::Map<Vectors> corner) {
+      const Vectors xe = gather(x, e);
+      const Eigen::Matrix3d R = fem::computeRotation(method, m_constants[e], xe);
+      m_rotations[e] = R;
+      corner = fem::computeForce(m_constants[e], R, xe);
+    });
+    sumCorners(f, 1.0, pool);
+  }
+
+  /// df += kFactor K dx with K = -R Ke R^T (N/m), the rotations of the last addForce.
+  void addDForce(std::span<const Vec3d> dx, std::span<Vec3d> df, double kFactor,
+                 const ThreadPool& pool) {
+    forEachElement(pool, [&](std::size_t e, Eigen::Map<Vectors> corner) {
+      corner = fem::computeDForce(m_constants[e], m_rotations[e], gather(dx, e));
+    });
+    sumCorners(df, kFactor, pool);
+  }
+
+  /// Adds kFactor K = -kFactor R Ke R^T, this state's first row at `offset`: element matrices
+  /// are computed in parallel batches, then added in element order (the accumulator is
+  /// sequential and its pattern must repeat from step to step).
+  void addKToMatrix(MatrixAccumulator& matrix, std::size_t offset, double kFactor,
+                    const ThreadPool& pool) {
+    if (size() == 0 || kFactor == 0) return;
+    if (m_matrices.empty()) m_matrices.resize(std::min(size(), kMatrixBatch));
+    for (std::size_t first = 0; first < size(); first += kMatrixBatch) {
+      const std::size_t count = std::min(kMatrixBatch, size() - first);
+      pool.parallelFor(count, kGrain / 4, [this, first](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k)
+          m_matrices[k] = fem::computeStiffness(m_constants[first + k], m_rotations[first + k]);
+      });
+      for (std::size_t k = 0; k < count; ++k)
+        addElementMatrix(matrix, offset, first + k, -kFactor, m_matrices[k]);
+    }
+  }
+
+  /// Adds factor * (M (x) I_3) for one N x N matrix M per element (a consistent mass).
+  template <class NodalMatrices>
+  void addNodalMatrices(MatrixAccumulator& matrix, std::size_t offset, double factor,
+                        const NodalMatrices& perElement) const {
+    for (std::size_t e = 0; e < size(); ++e) {
+      const Indices& nodes = m_elements[e];
+      for (int i = 0; i < N; ++i)
+        for (int j = 0; j < N; ++j) {
+          const double value = factor * perElement[e](i, j);
+          for (std::size_t k = 0; k < 3; ++k)
+            matrix.add(offset + 3 * nodes[i] + k, offset + 3 * nodes[j] + k, value);
+        }
+    }
+  }
+
+  /// Potential energy sum 1/2 u^T Ke u (J) at x, rotations computed at x (not kept). Summed
+  /// sequentially in element order.
+  double energy(fem::RotationMethod method, std::span<const Vec3d> x) const {
+    double total = 0;
+    for (std::size_t e = 0; e < size(); ++e) {
+      const Vectors xe = gather(x, e);
+      total +=
+          fem::computeEnergy(m_constants[e], fem::computeRotation(method, m_constants[e], xe), xe);
+    }
+    return total;
+  }
+
+  /// out += factor * (sum over the elements of each vertex of the corners written by
+  /// perElement(e, corner)): the deterministic element-then-vertex pattern, for any
+  /// per-element product (forces, stiffness or mass times a vector).
+  template <class PerElement>
+  void accumulate(std::span<Vec3d> out, double factor, const ThreadPool& pool,
+                  PerElement&& perElement) {
+    forEachElement(pool, perElement);
+    sumCorners(out, factor, pool);
+  }
+
+  /// The element's nodal vectors taken from a state vector.
+  Vectors gather(std::span<const Vec3d> v, std::size_t e) const {
+    Vectors result;
+    const Indices& nodes = m_elements[e];
+    for (int i = 0; i < N; ++i) result.col(i) = v[nodes[i]];
+    return result;
+  }
+
+ private:
+  template <class PerElement>
+  void forEachElement(const ThreadPool& pool, PerElement&& perElement) {
+    // Two captured words: stored in place by std::function (no allocation per call).
+    pool.parallelFor(size(), kGrain, [this, &perElement](std::size_t begin, std::size_t end) {
+      for (std::size_t e = begin; e < end; ++e)
+        perElement(e, Eigen::Map<Vectors>(m_corners[e * N].data()));
+    });
+  }
+
+  // out[v] += factor * (corners around v, summed in increasing element order).
+  void sumCorners(std::span<Vec3d> out, double factor, const ThreadPool& pool) const {
+    // One captured reference, so that the std::function of parallelFor stores the lambda in
+    // place instead of allocating it at every call.
+    const struct {
+      std::span<Vec3d> out;
+      double factor;
+    } target{out, factor};
+    const std::size_t n = std::min(out.size(), pointCount());
+    pool.parallelFor(n, 4 * kGrain, [this, &target](std::size_t begin, std::size_t end) {
+      const double factor = target.factor;
+      for (std::size_t v = begin; v < end; ++v) {
+        const Index first = m_vertexOffsets[v], last = m_vertexOffsets[v + 1];
+        if (first == last) continue;
+        Vec3d sum = m_corners[m_vertexCorners[first]];
+        for (Index c = first + 1; c < last; ++c) sum += m_corners[m_vertexCorners[c]];
+        target.out[v] += factor * sum;
+      }
+    });
+  }
+
+  void addElementMatrix(MatrixAccumulator& matrix, std::size_t offset, std::size_t e, double factor,
+                        const Matrix& K) const {
+    const Indices& nodes = m_elements[e];
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j)
+        matrix.addBlock(offset + 3 * std::size_t{nodes[i]}, offset + 3 * std::size_t{nodes[j]},
+                        factor * K.template block<3, 3>(3 * i, 3 * j));
+  }
+
+  std::vector<Indices> m_elements;
+  std::vector<Element> m_constants;
+  std::vector<Eigen::Matrix3d> m_rotations;
+  std::vector<Vec3d> m_corners;           // (elements x N): element e, node i at e * N + i
+  std::vector<Index> m_vertexOffsets{0};  // (points + 1) into m_vertexCorners
+  std::vector<Index> m_vertexCorners;     // corners around each vertex, increasing
+  std::vector<Matrix> m_matrices;         // (kMatrixBatch) scratch of addKToMatrix
+  std::vector<char> m_degenerate;         // (elements) scratch of computeConstants
+};
+
+}  // namespace stroma
