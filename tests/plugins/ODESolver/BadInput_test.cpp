@@ -44,7 +44,7 @@ TEST_P(EverySolver, StopsAtANonFiniteStateNamingTheStepAndTheState) {
   ASSERT_TRUE(s.step()) << s.log();
   s.state().writeCoord(VecId::position())[1].y() = std::numeric_limits<double>::quiet_NaN();
   EXPECT_FALSE(s.step());
-  const Message m = findError(s.scene().log(), "diverged");
+  const Message m = findError(s.scene().log(), "the simulation diverged");
   EXPECT_NE(m.text.find("after step 3 of /root/Body/dofs is not finite at index 1"),
             std::string::npos)
       << s.log();
