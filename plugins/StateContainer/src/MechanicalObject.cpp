@@ -5,6 +5,9 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "core/Node.h"
+#include "topology/Topology.h"
+
 namespace stroma {
 
 namespace {
@@ -41,6 +44,13 @@ void scaleCoord(RigidCoord3& c, double s) { c.center *= s; }
 
 template <class DataTypes>
 void MechanicalObject<DataTypes>::init() {
+  // As SOFA: a state given neither positions nor a size takes the points of the topology in
+  // its node (a RegularGridTopology, a container that took a loader's points).
+  if constexpr (std::is_same_v<DataTypes, Vec3Types>) {
+    if (d_position.value().empty() && d_size.value() == 0 && this->node())
+      if (const Topology* topology = this->node()->template get<Topology>())
+        if (!topology->positions().empty()) d_position.setValue(topology->positions());
+  }
   VecCoord& x = d_position.edit();
   if (x.empty() && d_size.value() > 0) x.assign(static_cast<std::size_t>(d_size.value()), DataTypes::zeroCoord());
   if (d_size.isSet() && d_position.isSet() && static_cast<int>(x.size()) != d_size.value() &&

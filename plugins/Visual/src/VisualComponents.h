@@ -38,7 +38,8 @@ class OglModel final : public VisualModel {
   Data<Vec2d> d_scaleTex{this, "scaleTex", Vec2d::Ones(), "Texture coordinate scale."};
   Data<bool> d_putOnlyTexCoords{this, "putOnlyTexCoords", false, "SOFA drawing option."};
   Data<bool> d_useNormals{this, "useNormals", true, "Use the given normals."};
-  Data<Vec3d> d_normal{this, "normal", Vec3d::Zero(), "SOFA drawing option."};
+  Data<std::vector<Vec3d>> d_normal{this, "normal", {},
+                                    "Normal of each point (nbPoints x 3), as a loader gives them."};
   Data<bool> d_alphaBlend{this, "alphaBlend", false, "Blend with alpha."};
   Data<std::string> d_sfactor{this, "sfactor", "GL_SRC_ALPHA", "OpenGL source blend factor."};
   Data<std::string> d_dfactor{this, "dfactor", "GL_ONE_MINUS_SRC_ALPHA", "OpenGL destination blend factor."};
