@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "BarycentricMapping.h"
 #include "IdentityMapping.h"
 #include "RigidMapping.h"
 #include "SubsetMapping.h"
@@ -15,6 +16,8 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .with<SubsetMapping>("Vec3d,Vec3d");
   registry.add("RigidMapping", "Points attached to rigid frames")
       .with<RigidMapping>("Rigid3d,Vec3d");
+  registry.add("BarycentricMapping", "Points embedded in the tetrahedra or hexahedra of a mesh")
+      .with<BarycentricMapping>("Vec3d,Vec3d");
 }
 
 }  // namespace

@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: MIT
+#include "BarycentricMapping.h"
+
+#include <algorithm>
+
+#include "topology/Topology.h"
+
+namespace stroma {
+
+const Topology* BarycentricMapping::findTopology() {
+  if (l_inputTopology) {
+    if (auto* t = dynamic_cast<const Topology*>(l_inputTopology.get())) return t;
+    if (auto* n = dynamic_cast<const Node*>(l_inputTopology.get())) return n->get<Topology>();
+    msgError(l_inputTopology->path() + " is a " + l_inputTopology->className() + ", not a topology",
+             "input_topology");
+    return nullptr;
+  }
+  return input()->node() ? input()->node()->get<Topology>() : nullptr;
+}
+
+void BarycentricMapping::init() {
+  if (!findStates()) return;
+  m_options.warnUnsupported(*this, output() != nullptr);
+  if (!output()) return;
+  const Topology* topology = findTopology();
+  if (!topology) {
+    if (isValid())
+      msgError("no topology in " + input()->node()->path() +
+                   ": the input's points need tetrahedra or hexahedra (MeshTopology, "
+                   "TetrahedronSetTopologyContainer, RegularGridTopology, ...)",
+               "input_topology");
+    return;
+  }
+  const auto& tetrahedra = topology->tetrahedra();
+  const auto& hexahedra = topology->hexahedra();
+  if (tetrahedra.empty() && hexahedra.empty()) {
+    msgError(topology->path() +
+                 " has no tetrahedra nor hexahedra: mapping onto surfaces or "
+                 "lines is not supported",
+             "input_topology");
+    return;
+  }
+  const bool rest = d_useRestPosition.value();
+  const auto& nodes = input()->readCoord(rest ? VecId::restPosition() : VecId::position());
+  const auto& points = output()->readCoord(rest ? VecId::restPosition() : VecId::position());
+
+  // Every element must index the input's points.
+  auto checkIndices = [&](const auto& elements, const char* kind) {
+    for (std::size_t e = 0; e < elements.size(); ++e)
+      for (Index n : elements[e])
+        if (n >= nodes.size()) {
+          msgError(std::string(kind) + " " + std::to_string(e) + " of " + topology->path() +
+                       " uses point " + std::to_string(n) + ", out of range of the " +
+                       std::to_string(nodes.size()) + " input points",
+                   "input_topology");
+          return false;
+        }
+    return true;
+  };
+  if (!checkIndices(tetrahedra, "tetrahedron") || !checkIndices(hexahedra, "hexahedron")) return;
+
+  std::vector<Index> degenerate;
+  m_points = barycentric::embedPoints(nodes, tetrahedra, hexahedra, points, &degenerate);
+  m_jacobianReady = false;
+  if (!degenerate.empty())
+    msgWarning(std::to_string(degenerate.size()) + " elements of " + topology->path() +
+                   " have no volume and receive no point (the first is element " +
+                   std::to_string(degenerate.front()) + ")",
+               "input_topology");
+  std::size_t outside = 0, farthest = 0;
+  for (std::size_t k = 0; k < m_points.size(); ++k) {
+    if (m_points[k].count == 0) {
+      msgError("output point " + std::to_string(k) + " could not be placed in any element of " +
+                   topology->path(),
+               "input_topology");
+      return;
+    }
+    if (m_points[k].distance > 0) {
+      if (outside == 0 || m_points[k].distance > m_points[farthest].distance) farthest = k;
+      ++outside;
+    }
+  }
+  if (outside)
+    msgWarning(std::to_string(outside) + " of the " + std::to_string(m_points.size()) +
+                   " output points are outside the input mesh and follow their nearest "
+                   "element (the farthest, point " +
+                   std::to_string(farthest) + ", is at " +
+                   std::to_string(m_points[farthest].distance) + ")",
+               "output");
+  applyAtInit(*this, m_options.applyRestPosition.value());
+}
+
+void BarycentricMapping::apply(OutVecCoord& out, const InVecCoord& in) {
+  out.resize(m_points.size());
+  for (std::size_t k = 0; k < m_points.size(); ++k) {
+    const auto& p = m_points[k];
+    Vec3d x = Vec3d::Zero();
+    for (int i = 0; i < p.count; ++i) x += p.weights[i] * in[p.nodes[i]];
+    out[k] = x;
+  }
+}
+
+void BarycentricMapping::applyJ(OutVecDeriv& out, const InVecDeriv& in) {
+  out.resize(m_points.size());
+  for (std::size_t k = 0; k < m_points.size(); ++k) {
+    const auto& p = m_points[k];
+    Vec3d v = Vec3d::Zero();
+    for (int i = 0; i < p.count; ++i) v += p.weights[i] * in[p.nodes[i]];
+    out[k] = v;
+  }
+}
+
+void BarycentricMapping::applyJT(InVecDeriv& in, const OutVecDeriv& out) {
+  for (std::size_t k = 0; k < m_points.size() && k < out.size(); ++k) {
+    const auto& p = m_points[k];
+    for (int i = 0; i < p.count; ++i) in[p.nodes[i]] += p.weights[i] * out[k];
+  }
+}
+
+const Eigen::SparseMatrix<double>& BarycentricMapping::jacobian() {
+  // Constant: built once after init.
+  const auto columns = static_cast<Eigen::Index>(input()->matrixSize());
+  if (m_jacobianReady && m_J.cols() == columns) return m_J;
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(m_points.size() * 3 * 8);
+  for (std::size_t k = 0; k < m_points.size(); ++k) {
+    const auto& p = m_points[k];
+    for (int i = 0; i < p.count; ++i)
+      for (int c = 0; c < 3; ++c)
+        triplets.emplace_back(static_cast<int>(3 * k) + c, static_cast<int>(3 * p.nodes[i]) + c,
+                              p.weights[i]);
+  }
+  m_J.resize(static_cast<Eigen::Index>(3 * m_points.size()), columns);
+  m_J.setFromTriplets(triplets.begin(), triplets.end());
+  m_jacobianReady = true;
+  return m_J;
+}
+
+}  // namespace stroma

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "BarycentricCoordinates.h"
+#include "MappedOutput.h"
+#include "core/StateTypes.h"
+#include "simulation/Mapping.h"
+
+namespace stroma {
+
+class Topology;
+
+/// Points embedded in a volume mesh (SOFA's BarycentricMapping, Vec3d -> Vec3d): each output
+/// point follows the element of the input's topology it lies in, x_out = sum_k w_k x_in[n_k],
+/// with its barycentric weights in a tetrahedron or trilinear weights in a hexahedron
+/// (BarycentricCoordinates.h). J holds the weights and is constant.
+///
+/// The element of each point is the one containing it at init, else the nearest, whose weights
+/// then extrapolate; a warning gives how many points are outside and the farthest distance. The
+/// topology is `input_topology`, else the one in the input's node (MeshTopology, the
+/// *SetTopologyContainer components, RegularGridTopology): its tetrahedra and hexahedra are
+/// used. With useRestPosition, the weights come from the rest positions of input and output.
+/// A visual output is not mapped in batch runs, so its weights are not computed.
+class BarycentricMapping final : public Mapping<Vec3Types, Vec3Types> {
+ public:
+  Data<bool> d_useRestPosition{this, "useRestPosition", false,
+                               "Compute the weights from the rest positions of the input and "
+                               "the output (default: their positions)."};
+  Link<Base> l_inputTopology{this, "input_topology",
+                             "The input's volume mesh (default: the topology in the input's "
+                             "node)."};
+  SofaMappingOptions m_options{this};
+
+  void init() override;
+
+  void apply(OutVecCoord& out, const InVecCoord& in) override;
+  void applyJ(OutVecDeriv& out, const InVecDeriv& in) override;
+  void applyJT(InVecDeriv& in, const OutVecDeriv& out) override;
+  /// nbOutput*3 x nbInput*3, the weights on the diagonal of 3x3 blocks.
+  const Eigen::SparseMatrix<double>& jacobian() override;
+
+  /// The element and weights of each output point (after init).
+  const std::vector<barycentric::EmbeddedPoint>& embedding() const { return m_points; }
+
+ private:
+  const Topology* findTopology();
+  std::vector<barycentric::EmbeddedPoint> m_points;
+  Eigen::SparseMatrix<double> m_J;
+  bool m_jacobianReady = false;
+};
+
+}  // namespace stroma
