@@ -48,9 +48,17 @@ class CorotationalElements {
                 "CorotationalElements takes fem::CorotationalTetrahedron or "
                 "fem::CorotationalHexahedron.");
 
-  /// Elements per task of the parallel loops: a corotational element costs 0.1 to 1 us, so a
-  /// task of 128 elements pays for its scheduling.
+  /// Work per task of the parallel loops, chosen so that a task lasts 10 to 100 us: a loop no
+  /// longer than one task runs on the calling thread alone, since waking a second thread and
+  /// waiting for it at the end costs tens of microseconds (more on a machine whose cores are
+  /// shared). Rotation and force (or stiffness): 0.1 to 1 us per element.
   static constexpr std::size_t kGrain = 128;
+  /// The product -R Ke R^T dx: about 35 ns per tetrahedron, 8 times more per hexahedron. The
+  /// products of a CG solve on a few thousand tetrahedra then stay on one thread (measured on
+  /// the organ scene, 3579 tetrahedra: 0.13 ms per product on one thread, 0.16 ms on two).
+  static constexpr std::size_t kProductGrain = N == 4 ? 4096 : 512;
+  /// Sums per vertex: 20 to 50 ns each (the corners of 4 to 24 elements).
+  static constexpr std::size_t kVertexGrain = 2048;
   /// Elements whose stiffness matrices are computed together (in parallel) before being added
   /// to the (sequential) matrix accumulator: bounds the scratch to kMatrixBatch matrices.
   static constexpr std::size_t kMatrixBatch = 512;
@@ -144,7 +152,7 @@ class CorotationalElements {
   /// f += elastic forces at x (N); keeps the rotations.
   void addForce(fem::RotationMethod method, std::span<const Vec3d> x, std::span<Vec3d> f,
                 const ThreadPool& pool) {
-    forEachElement(pool, [&](std::size_t e, Eigen::Map<Vectors> corner) {
+    forEachElement(pool, kGrain, [&](std::size_t e, Eigen::Map<Vectors> corner) {
       const Vectors xe = gather(x, e);
       const Eigen::Matrix3d R = fem::computeRotation(method, m_constants[e], xe);
       m_rotations[e] = R;
@@ -156,7 +164,7 @@ class CorotationalElements {
   /// df += kFactor K dx with K = -R Ke R^T (N/m), the rotations of the last addForce.
   void addDForce(std::span<const Vec3d> dx, std::span<Vec3d> df, double kFactor,
                  const ThreadPool& pool) {
-    forEachElement(pool, [&](std::size_t e, Eigen::Map<Vectors> corner) {
+    forEachElement(pool, kProductGrain, [&](std::size_t e, Eigen::Map<Vectors> corner) {
       corner = fem::computeDForce(m_constants[e], m_rotations[e], gather(dx, e));
     });
     sumCorners(df, kFactor, pool);
@@ -213,7 +221,7 @@ class CorotationalElements {
   template <class PerElement>
   void accumulate(std::span<Vec3d> out, double factor, const ThreadPool& pool,
                   PerElement&& perElement) {
-    forEachElement(pool, perElement);
+    forEachElement(pool, kProductGrain, perElement);
     sumCorners(out, factor, pool);
   }
 
@@ -227,9 +235,9 @@ class CorotationalElements {
 
  private:
   template <class PerElement>
-  void forEachElement(const ThreadPool& pool, PerElement&& perElement) {
+  void forEachElement(const ThreadPool& pool, std::size_t grain, PerElement&& perElement) {
     // Two captured words: stored in place by std::function (no allocation per call).
-    pool.parallelFor(size(), kGrain, [this, &perElement](std::size_t begin, std::size_t end) {
+    pool.parallelFor(size(), grain, [this, &perElement](std::size_t begin, std::size_t end) {
       for (std::size_t e = begin; e < end; ++e)
         perElement(e, Eigen::Map<Vectors>(m_corners[e * N].data()));
     });
@@ -244,7 +252,7 @@ class CorotationalElements {
       double factor;
     } target{out, factor};
     const std::size_t n = std::min(out.size(), pointCount());
-    pool.parallelFor(n, 4 * kGrain, [this, &target](std::size_t begin, std::size_t end) {
+    pool.parallelFor(n, kVertexGrain, [this, &target](std::size_t begin, std::size_t end) {
       const double factor = target.factor;
       for (std::size_t v = begin; v < end; ++v) {
         const Index first = m_vertexOffsets[v], last = m_vertexOffsets[v + 1];
