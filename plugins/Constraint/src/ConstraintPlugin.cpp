@@ -12,13 +12,15 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .with<FixedProjectiveConstraint<Vec3Types>>("Vec3d")
       .with<FixedProjectiveConstraint<Rigid3Types>>("Rigid3d")
       .alias("FixedConstraint");
-  registry.add("PartialFixedProjectiveConstraint",
-               "Fixes some directions of points or rigid frames by projection")
+  registry
+      .add("PartialFixedProjectiveConstraint",
+           "Fixes some directions of points or rigid frames by projection")
       .with<PartialFixedProjectiveConstraint<Vec3Types>>("Vec3d")
       .with<PartialFixedProjectiveConstraint<Rigid3Types>>("Rigid3d")
       .alias("PartialFixedConstraint");
-  registry.add("LinearMovementProjectiveConstraint",
-               "Moves points or rigid frames along a piecewise-linear trajectory")
+  registry
+      .add("LinearMovementProjectiveConstraint",
+           "Moves points or rigid frames along a piecewise-linear trajectory")
       .with<LinearMovementProjectiveConstraint<Vec3Types>>("Vec3d")
       .with<LinearMovementProjectiveConstraint<Rigid3Types>>("Rigid3d")
       .alias("LinearMovementConstraint");
@@ -27,7 +29,7 @@ void registerComponents(stroma::PluginRegistry& registry) {
 }  // namespace
 
 extern "C" STROMA_PLUGIN_EXPORT const stroma::PluginEntry* stroma_plugin_entry() {
-  static const stroma::PluginEntry entry = stroma::makePluginEntry(
-      "Constraint", "0.1.0", "Projective constraints", registerComponents);
+  static const stroma::PluginEntry entry =
+      stroma::makePluginEntry("Constraint", "0.1.0", "Projective constraints", registerComponents);
   return &entry;
 }

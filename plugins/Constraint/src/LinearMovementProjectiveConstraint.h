@@ -28,11 +28,13 @@ class LinearMovementProjectiveConstraint final : public ProjectiveConstraint<Dat
   using typename ProjectiveConstraint<DataTypes>::VecCoord;
   using typename ProjectiveConstraint<DataTypes>::VecDeriv;
 
-  Data<std::vector<unsigned>> d_indices{this, "indices", {0},
-                                        "Indices of the moved points (SOFA's default: 0)."};
-  Data<std::vector<double>> d_keyTimes{this, "keyTimes", {},
-                                       "Key times, in increasing order (nbKeys).", {.unit = "s"}};
-  Data<VecDeriv> d_movements{this, "movements", {},
+  Data<std::vector<unsigned>> d_indices{
+      this, "indices", {0}, "Indices of the moved points (SOFA's default: 0)."};
+  Data<std::vector<double>> d_keyTimes{
+      this, "keyTimes", {}, "Key times, in increasing order (nbKeys).", {.unit = "s"}};
+  Data<VecDeriv> d_movements{this,
+                             "movements",
+                             {},
                              "Displacement at each key time (nbKeys x 3 for points; nbKeys x 6 "
                              "'dx dy dz ax ay az' for rigid frames, angles in radians).",
                              {.unit = "m"}};

@@ -20,7 +20,9 @@ class PartialFixedProjectiveConstraint final : public ProjectiveConstraint<DataT
   Data<std::vector<unsigned>> d_indices{this, "indices", {}, "Indices of the constrained points."};
   Data<bool> d_fixAll{this, "fixAll", false, "Constrain every point."};
   Data<std::vector<int>> d_fixedDirections{
-      this, "fixedDirections", {},
+      this,
+      "fixedDirections",
+      {},
       "1 for each fixed derivative component, 0 for a free one (3 flags for points, 6 for "
       "rigid frames); empty: all fixed.",
       {.min = 0.0, .max = 1.0}};

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: MIT
+#include "DiagonalMass.h"
+#include "MeshMatrixMass.h"
 #include "UniformMass.h"
 #include "core/Plugin.h"
 
@@ -9,6 +11,14 @@ void registerComponents(stroma::PluginRegistry& registry) {
   registry.add("UniformMass", "The same mass at every point or rigid frame; applies gravity")
       .with<UniformMass<Vec3Types>>("Vec3d")
       .with<UniformMass<Rigid3Types>>("Rigid3d");
+  // SOFA scenes also write the mass templates as "Vec3,Vec3" (state and geometry types).
+  registry.add("DiagonalMass", "Lumped mass from the volumes of the topology's elements")
+      .with<DiagonalMass>("Vec3d")
+      .with<DiagonalMass>("Vec3d,Vec3d");
+  registry
+      .add("MeshMatrixMass", "Consistent (or lumped) mass matrix of the topology's linear elements")
+      .with<MeshMatrixMass>("Vec3d")
+      .with<MeshMatrixMass>("Vec3d,Vec3d");
 }
 
 }  // namespace

@@ -35,8 +35,10 @@ struct DataTraits<RigidMass3> {
     TokenReader in(cleaned);
     const std::size_t count = in.remaining();
     if (count != 1 && count != 2 && count != 11) {
-      error = "expected 1 (mass), 2 (mass volume) or 11 (mass volume and a 3x3 inertia matrix "
-              "per unit mass) numbers, got " + std::to_string(count);
+      error =
+          "expected 1 (mass), 2 (mass volume) or 11 (mass volume and a 3x3 inertia matrix "
+          "per unit mass) numbers, got " +
+          std::to_string(count);
       return false;
     }
     RigidMass3 parsed;

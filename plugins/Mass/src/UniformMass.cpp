@@ -3,8 +3,8 @@
 
 #include <Eigen/LU>
 
-#include "core/Node.h"
 #include "IndexChecks.h"
+#include "core/Node.h"
 
 namespace stroma {
 
@@ -29,18 +29,21 @@ void UniformMass<DataTypes>::init() {
                        ") are not supported: give vertexMass or totalMass instead",
                    "filename");
   const double mass = [&] {
-    if constexpr (kRigid) return d_vertexMass.value().mass;
-    else return d_vertexMass.value();
+    if constexpr (kRigid)
+      return d_vertexMass.value().mass;
+    else
+      return d_vertexMass.value();
   }();
   if (d_totalMass.value() == 0 && mass == 0)
-    this->msgWarning("vertexMass and totalMass are both 0: the points have no mass",
-                     "vertexMass");
+    this->msgWarning("vertexMass and totalMass are both 0: the points have no mass", "vertexMass");
   if constexpr (kRigid) {
     const Mat3d J = d_vertexMass.value().inertia;
     if (J.determinant() <= 0 || J.diagonal().minCoeff() <= 0)
-      this->msgError("the inertia matrix per unit mass must be positive definite (got a "
-                     "determinant of " + std::to_string(J.determinant()) + ")",
-                     "vertexMass");
+      this->msgError(
+          "the inertia matrix per unit mass must be positive definite (got a "
+          "determinant of " +
+              std::to_string(J.determinant()) + ")",
+          "vertexMass");
   }
 }
 
@@ -51,8 +54,10 @@ auto UniformMass<DataTypes>::pointMass() const -> MassType {
     const std::size_t count =
         d_indices.value().empty() ? this->mstate()->size() : d_indices.value().size();
     const double share = count ? d_totalMass.value() / static_cast<double>(count) : 0.0;
-    if constexpr (kRigid) m.mass = share;
-    else m = share;
+    if constexpr (kRigid)
+      m.mass = share;
+    else
+      m = share;
   }
   return m;
 }

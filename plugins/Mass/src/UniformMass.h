@@ -46,17 +46,23 @@ class UniformMass final : public Mass<DataTypes> {
   using typename Mass<DataTypes>::VecDeriv;
   static constexpr bool kRigid = std::is_same_v<DataTypes, Rigid3Types>;
 
-  Data<MassType> d_vertexMass{this, "vertexMass", internal::UniformMassType<DataTypes>::unit(),
+  Data<MassType> d_vertexMass{this,
+                              "vertexMass",
+                              internal::UniformMassType<DataTypes>::unit(),
                               kRigid ? "Mass of each frame, 'mass volume inertia(3x3 per unit "
                                        "mass)' (when totalMass is 0)."
                                      : "Mass of each point (when totalMass is 0).",
                               {.unit = "kg", .min = 0.0}};
-  Data<double> d_totalMass{this, "totalMass", 0.0,
+  Data<double> d_totalMass{this,
+                           "totalMass",
+                           0.0,
                            "Total mass, spread evenly over the points; 0 to use vertexMass.",
                            {.unit = "kg", .min = 0.0}};
-  Data<std::vector<unsigned>> d_indices{this, "indices", {},
-                                        "Points that have mass (default: all)."};
-  Data<FileName> d_filename{this, "filename", {},
+  Data<std::vector<unsigned>> d_indices{
+      this, "indices", {}, "Points that have mass (default: all)."};
+  Data<FileName> d_filename{this,
+                            "filename",
+                            {},
                             "SOFA's .rigid mass file: not supported (an error when given).",
                             {.mustExist = false}};
   Data<bool> d_handleTopologicalChanges{this, "handleTopologicalChanges", false,

@@ -28,8 +28,8 @@ void ConstantForceField<DataTypes>::init() {
   const auto& forces = d_forces.value();
   const std::size_t count = d_indices.value().empty() ? n : d_indices.value().size();
   if (!forces.empty() && forces.size() != count && forces.size() != 1)
-    this->msgError("has " + std::to_string(forces.size()) + " forces for " +
-                       std::to_string(count) + " indices",
+    this->msgError("has " + std::to_string(forces.size()) + " forces for " + std::to_string(count) +
+                       " indices",
                    "forces");
 }
 
@@ -52,8 +52,8 @@ void ConstantForceField<DataTypes>::forEachForce(std::size_t n, F&& f) const {
 }
 
 template <class DataTypes>
-void ConstantForceField<DataTypes>::addForce(const MechanicalParams&, VecDeriv& f,
-                                             const VecCoord&, const VecDeriv&) {
+void ConstantForceField<DataTypes>::addForce(const MechanicalParams&, VecDeriv& f, const VecCoord&,
+                                             const VecDeriv&) {
   forEachForce(f.size(), [&](std::size_t i, const Deriv& force) { accumulate(f[i], force); });
 }
 

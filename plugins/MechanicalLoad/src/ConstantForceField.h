@@ -18,13 +18,16 @@ class ConstantForceField final : public ForceField<DataTypes> {
   using typename ForceField<DataTypes>::VecCoord;
   using typename ForceField<DataTypes>::VecDeriv;
 
-  Data<std::vector<unsigned>> d_indices{this, "indices", {},
-                                        "Points that receive a force (default: all)."};
+  Data<std::vector<unsigned>> d_indices{
+      this, "indices", {}, "Points that receive a force (default: all)."};
   Data<VecDeriv> d_forces{this, "forces", {}, "One force per index.", {.unit = "N"}};
-  Data<Deriv> d_force{this, "force", DataTypes::zeroDeriv(), "The same force on every index.",
-                      {.unit = "N"}};
-  Data<Deriv> d_totalForce{this, "totalForce", DataTypes::zeroDeriv(),
-                           "A total force, spread evenly over the indices.", {.unit = "N"}};
+  Data<Deriv> d_force{
+      this, "force", DataTypes::zeroDeriv(), "The same force on every index.", {.unit = "N"}};
+  Data<Deriv> d_totalForce{this,
+                           "totalForce",
+                           DataTypes::zeroDeriv(),
+                           "A total force, spread evenly over the indices.",
+                           {.unit = "N"}};
   Data<double> d_showArrowSize{this, "showArrowSize", 0.0, "Viewers only."};
 
   void init() override;

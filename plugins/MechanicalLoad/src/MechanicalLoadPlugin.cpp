@@ -18,7 +18,7 @@ void registerComponents(stroma::PluginRegistry& registry) {
 }  // namespace
 
 extern "C" STROMA_PLUGIN_EXPORT const stroma::PluginEntry* stroma_plugin_entry() {
-  static const stroma::PluginEntry entry = stroma::makePluginEntry(
-      "MechanicalLoad", "0.1.0", "External loads", registerComponents);
+  static const stroma::PluginEntry entry =
+      stroma::makePluginEntry("MechanicalLoad", "0.1.0", "External loads", registerComponents);
   return &entry;
 }

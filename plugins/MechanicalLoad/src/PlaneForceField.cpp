@@ -64,15 +64,15 @@ void PlaneForceField<DataTypes>::addDForce(const MechanicalParams& mp, VecDeriv&
 }
 
 template <class DataTypes>
-void PlaneForceField<DataTypes>::addKToMatrix(const MechanicalParams& mp,
-                                              MatrixAccumulator& matrix, std::size_t offset) {
+void PlaneForceField<DataTypes>::addKToMatrix(const MechanicalParams& mp, MatrixAccumulator& matrix,
+                                              std::size_t offset) {
   const Vec3d n = unitNormal();
   const double k = d_stiffness.value(), c = d_damping.value();
   const VecCoord& x = this->mstate()->readCoord(mp.x);
   constexpr std::size_t block = DataTypes::derivSize;
   forEachContact(x, [&](std::size_t i, double delta) {
-    const Mat3d K = -mp.kFactor * k * n * n.transpose() +
-                    mp.bFactor * c * delta * Mat3d::Identity();
+    const Mat3d K =
+        -mp.kFactor * k * n * n.transpose() + mp.bFactor * c * delta * Mat3d::Identity();
     matrix.addBlock(offset + block * i, offset + block * i, K);
   });
 }

@@ -26,9 +26,11 @@ class PlaneForceField final : public ForceField<DataTypes> {
   Data<Vec3d> d_normal{this, "normal", Vec3d(0, 1, 0),
                        "Normal of the plane, pointing to the free side."};
   Data<double> d_d{this, "d", 0.0, "The plane is the points x with x.normal = d.", {.unit = "m"}};
-  Data<double> d_stiffness{this, "stiffness", 500.0, "Penalty stiffness k.",
-                           {.unit = "N/m", .min = 0.0}};
-  Data<double> d_damping{this, "damping", 5.0,
+  Data<double> d_stiffness{
+      this, "stiffness", 500.0, "Penalty stiffness k.", {.unit = "N/m", .min = 0.0}};
+  Data<double> d_damping{this,
+                         "damping",
+                         5.0,
                          "Damping c, times the depth (force c * depth * velocity).",
                          {.unit = "N s/m^2", .min = 0.0}};
   Data<bool> d_bilateral{this, "bilateral", false,

@@ -26,14 +26,15 @@ struct DataTraits<std::vector<LinearSpring>> {
   static std::string typeName() {
     return "list of springs 'index1 index2 stiffness damping restLength'";
   }
-  static bool parse(std::string_view text, std::vector<LinearSpring>& springs,
-                    std::string& error) {
+  static bool parse(std::string_view text, std::vector<LinearSpring>& springs, std::string& error) {
     TokenReader in(text);
     const std::size_t count = in.remaining();
     if (count % 5 != 0) {
-      error = "expected 5 numbers per spring ('index1 index2 stiffness damping restLength'), "
-              "got " + std::to_string(count) + " numbers: " + std::to_string(count / 5) +
-              " springs and " + std::to_string(count % 5) + " numbers left over";
+      error =
+          "expected 5 numbers per spring ('index1 index2 stiffness damping restLength'), "
+          "got " +
+          std::to_string(count) + " numbers: " + std::to_string(count / 5) + " springs and " +
+          std::to_string(count % 5) + " numbers left over";
       return false;
     }
     std::vector<LinearSpring> result(count / 5);

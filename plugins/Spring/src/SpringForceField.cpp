@@ -53,9 +53,10 @@ void SpringForceField::init() {
                    ") are not supported: give the springs in 'spring'",
                file->name());
   if (static_cast<bool>(l_object1) != static_cast<bool>(l_object2)) {
-    msgError("give both object1 and object2 (springs between two states), or neither (springs "
-             "inside the node's state)",
-             l_object1 ? "object2" : "object1");
+    msgError(
+        "give both object1 and object2 (springs between two states), or neither (springs "
+        "inside the node's state)",
+        l_object1 ? "object2" : "object1");
     return;
   }
   if (l_object1) {
@@ -80,8 +81,8 @@ void SpringForceField::init() {
                  std::to_string(i2.size()) + ": expected as many",
              "indices2");
   else if (!lengths.empty() && lengths.size() != 1 && lengths.size() != i1.size())
-    msgError("expected " + std::to_string(i1.size()) + " lengths (one per spring), one, or none; got " +
-                 std::to_string(lengths.size()),
+    msgError("expected " + std::to_string(i1.size()) +
+                 " lengths (one per spring), one, or none; got " + std::to_string(lengths.size()),
              "lengths");
   else
     for (std::size_t k = 0; k < i1.size(); ++k)
@@ -103,8 +104,10 @@ const std::vector<LinearSpring>& SpringForceField::springs() const {
     std::size_t dropped = 0;
     for (const auto* list : {&d_springs.value(), &m_fromIndices})
       for (const LinearSpring& s : *list) {
-        if (s.m1 < n1 && s.m2 < n2) m_all.push_back(s);
-        else ++dropped;
+        if (s.m1 < n1 && s.m2 < n2)
+          m_all.push_back(s);
+        else
+          ++dropped;
       }
     if (dropped && isValid())
       msgWarning(std::to_string(dropped) + " springs with indices out of range are ignored",
@@ -136,8 +139,9 @@ void SpringForceField::accumulateKMatrix(const MechanicalParams& mp, MatrixAccum
   if (!has1 || !has2) {
     if ((has1 || has2) && !m_reportedOutside) {
       m_reportedOutside = true;
-      msgWarning("one of its states is outside this assembled system: its springs are left out "
-                 "of the matrix (the matrix-free path still has them)");
+      msgWarning(
+          "one of its states is outside this assembled system: its springs are left out "
+          "of the matrix (the matrix-free path still has them)");
     }
     return;
   }

@@ -24,25 +24,36 @@ class SpringForceField final : public BaseForceField {
   using State = MechanicalState<Vec3Types>;
 
   Data<std::vector<LinearSpring>> d_springs{
-      this, "spring", {},
+      this,
+      "spring",
+      {},
       "Springs, 'index1 index2 stiffness damping restLength' each (index1 in object1, index2 in "
       "object2)."};
-  Data<double> d_stiffness{this, "stiffness", 100.0,
+  Data<double> d_stiffness{this,
+                           "stiffness",
+                           100.0,
                            "Stiffness of the springs given by indices1/indices2.",
                            {.unit = "N/m", .min = 0.0}};
-  Data<double> d_damping{this, "damping", 5.0,
+  Data<double> d_damping{this,
+                         "damping",
+                         5.0,
                          "Damping of the springs given by indices1/indices2.",
                          {.unit = "N s/m", .min = 0.0}};
-  Data<std::vector<unsigned>> d_indices1{this, "indices1", {},
+  Data<std::vector<unsigned>> d_indices1{this,
+                                         "indices1",
+                                         {},
                                          "First ends of springs made with the common "
                                          "stiffness and damping (n)."};
-  Data<std::vector<unsigned>> d_indices2{this, "indices2", {},
-                                         "Second ends of those springs (n)."};
-  Data<std::vector<double>> d_lengths{this, "lengths", {},
+  Data<std::vector<unsigned>> d_indices2{this, "indices2", {}, "Second ends of those springs (n)."};
+  Data<std::vector<double>> d_lengths{this,
+                                      "lengths",
+                                      {},
                                       "Rest lengths of those springs: n values, one for all, "
                                       "or none for 0 (as SOFA).",
                                       {.unit = "m", .min = 0.0}};
-  Data<FileName> d_fileSprings{this, "fileSprings", {},
+  Data<FileName> d_fileSprings{this,
+                               "fileSprings",
+                               {},
                                "SOFA's spring files: not supported (an error when given).",
                                {.mustExist = false}};
   Data<FileName> d_filename{this, "filename", {}, "Same as fileSprings.", {.mustExist = false}};
@@ -74,7 +85,7 @@ class SpringForceField final : public BaseForceField {
 
   State* m_state1 = nullptr;
   State* m_state2 = nullptr;
-  mutable std::vector<LinearSpring> m_all;       ///< spring + indices-made springs
+  mutable std::vector<LinearSpring> m_all;  ///< spring + indices-made springs
   mutable std::uint64_t m_springsVersion = ~0ull;
   std::vector<LinearSpring> m_fromIndices;
   bool m_reportedOutside = false;

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "SpringKernel.h"
 
-
 namespace stroma {
 
 SpringResponse evaluateSpring(const LinearSpring& s, const Vec3d& p1, const Vec3d& p2,
@@ -43,9 +42,9 @@ double addSpringForces(const std::vector<LinearSpring>& springs, const SpringSta
                        std::vector<Vec3d>& f1, std::vector<Vec3d>& f2) {
   double energy = 0;
   for (const LinearSpring& s : springs) {
-    const SpringResponse r = evaluateSpring(s, x.x1[s.m1], x.x2[s.m2],
-                                            s.m1 < v1.size() ? v1[s.m1] : kZero,
-                                            s.m2 < v2.size() ? v2[s.m2] : kZero);
+    const SpringResponse r =
+        evaluateSpring(s, x.x1[s.m1], x.x2[s.m2], s.m1 < v1.size() ? v1[s.m1] : kZero,
+                       s.m2 < v2.size() ? v2[s.m2] : kZero);
     f1[s.m1] += r.force;
     f2[s.m2] -= r.force;
     energy += r.energy;

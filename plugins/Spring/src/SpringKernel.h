@@ -25,7 +25,7 @@ namespace stroma {
 
 /// What one spring does at given positions and velocities.
 struct SpringResponse {
-  Vec3d force = Vec3d::Zero();  ///< on the first point; the second gets -force
+  Vec3d force = Vec3d::Zero();      ///< on the first point; the second gets -force
   Mat3d stiffness = Mat3d::Zero();  ///< Ks = df1/dp2
   Mat3d damping = Mat3d::Zero();    ///< Bs = df1/dv2
   double energy = 0;

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "MeshSpringForceField.h"
 #include "SpringForceField.h"
 #include "core/Plugin.h"
 
@@ -9,6 +10,8 @@ void registerComponents(stroma::PluginRegistry& registry) {
   registry.add("SpringForceField", "Linear springs between points of one or two states")
       .with<SpringForceField>("Vec3d")
       .alias("StiffSpringForceField");
+  registry.add("MeshSpringForceField", "Linear springs along the edges of a mesh's elements")
+      .with<MeshSpringForceField>("Vec3d");
 }
 
 }  // namespace

@@ -15,7 +15,8 @@ const char* kSolver = R"(
 
 TEST(FixedProjectiveConstraint, RigidFrameStaysUnderGravityAndSpin) {
   SceneHolder s;
-  ASSERT_TRUE(s.load(std::string(R"(<Node name="root" gravity="0 -10 0" dt="0.01">)") + kSolver + R"(
+  ASSERT_TRUE(
+      s.load(std::string(R"(<Node name="root" gravity="0 -10 0" dt="0.01">)") + kSolver + R"(
   <MechanicalObject template="Rigid3" name="frames" position="0 0 0 0 0 0 1  1 0 0 0 0 0 1"
                     velocity="0 0 0 0 0 0  0 0 0 0 3 0"/>
   <UniformMass vertexMass="1"/>
@@ -33,7 +34,8 @@ TEST(FixedProjectiveConstraint, RigidFrameStaysUnderGravityAndSpin) {
 
 TEST(PartialFixedProjectiveConstraint, PointMovesAlongItsFreeDirectionOnly) {
   SceneHolder s;
-  ASSERT_TRUE(s.load(std::string(R"(<Node name="root" gravity="1 -10 2" dt="0.01">)") + kSolver + R"(
+  ASSERT_TRUE(
+      s.load(std::string(R"(<Node name="root" gravity="1 -10 2" dt="0.01">)") + kSolver + R"(
   <MechanicalObject name="dofs" position="0 0 0  1 1 1"/>
   <UniformMass vertexMass="1"/>
   <PartialFixedProjectiveConstraint name="partial" indices="1" fixedDirections="1 0 1"/>
@@ -52,7 +54,8 @@ TEST(PartialFixedProjectiveConstraint, PointMovesAlongItsFreeDirectionOnly) {
 
 TEST(PartialFixedProjectiveConstraint, RigidFrameKeepsItsCentreAndTurns) {
   SceneHolder s;
-  ASSERT_TRUE(s.load(std::string(R"(<Node name="root" gravity="0 -10 0" dt="0.01">)") + kSolver + R"(
+  ASSERT_TRUE(
+      s.load(std::string(R"(<Node name="root" gravity="0 -10 0" dt="0.01">)") + kSolver + R"(
   <MechanicalObject template="Rigid3" name="frame" position="0 0 0 0 0 0 1" velocity="0 0 0 0 0 2"/>
   <UniformMass vertexMass="1"/>
   <PartialFixedProjectiveConstraint template="Rigid3" indices="0" fixedDirections="1 1 1 0 0 0"/>

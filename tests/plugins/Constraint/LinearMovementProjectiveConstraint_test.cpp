@@ -15,7 +15,8 @@ namespace {
 // Point 1 follows 0 -> (1,0,0) at t=1 -> (1,2,0) at t=3, under gravity; point 0 is free.
 std::string pointScene(double dt) {
   return R"(
-<Node name="root" gravity="0 -10 0" dt=")" + std::to_string(dt) + R"(">
+<Node name="root" gravity="0 -10 0" dt=")" +
+         std::to_string(dt) + R"(">
   <EulerImplicitSolver rayleighMass="0" rayleighStiffness="0"/>
   <CGLinearSolver iterations="100" tolerance="1e-14" threshold="0"/>
   <MechanicalObject name="dofs" position="0 0 0  5 6 7"/>

@@ -142,11 +142,12 @@ TEST(UniformMass, BadInputIsReported) {
 <UniformMass vertexMass="1 1 1 0 0 0 -1 0 0 0 1"/></Node>)",
                 {"positive definite"});
   SceneHolder w;
-  EXPECT_EQ(w.loadFailing(
-                 R"(<Node><MechanicalObject position="0 0 0"/><UniformMass vertexMass="-1"/></Node>)",
-                 {"expected a value >= 0, got -1"})
-                .field,
-            "vertexMass");
+  EXPECT_EQ(
+      w.loadFailing(
+           R"(<Node><MechanicalObject position="0 0 0"/><UniformMass vertexMass="-1"/></Node>)",
+           {"expected a value >= 0, got -1"})
+          .field,
+      "vertexMass");
 }
 
 TEST(UniformMass, MassChangedWhileRunningActsAtTheNextStep) {

@@ -20,8 +20,8 @@ TEST(ConstantForceField, ForceAndTorqueOnARigidFrame) {
 </Node>)"));
   ASSERT_TRUE(s.step(10));
   const auto v = numbers(s.text("@frame.velocity"));
-  EXPECT_NEAR(v[0], 10 * 0.01 * 4 / 2, 1e-12);           // F / m
-  EXPECT_NEAR(v[5], 10 * 0.01 * 2 / (2 * 4), 1e-12);     // T / (m J_zz)
+  EXPECT_NEAR(v[0], 10 * 0.01 * 4 / 2, 1e-12);        // F / m
+  EXPECT_NEAR(v[5], 10 * 0.01 * 2 / (2 * 4), 1e-12);  // T / (m J_zz)
   EXPECT_NEAR(v[1] + v[2] + v[3] + v[4], 0, 1e-14);
 }
 

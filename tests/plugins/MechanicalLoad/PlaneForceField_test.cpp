@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "plugins/Spring/MechanicsTestSupport.h"
+#include "support/ForceFieldTest.h"
 
 namespace stroma::test {
 namespace {
@@ -14,9 +15,11 @@ std::string fallingScene(const std::string& templateName, const std::string& pos
 <Node name="root" gravity="0 -9.81 0" dt="0.005">
   <EulerImplicitSolver rayleighMass="0.2" rayleighStiffness="0.05"/>
   <CGLinearSolver iterations="100" tolerance="1e-14" threshold="0"/>
-  <MechanicalObject template=")" + templateName + R"(" name="dofs" position=")" + position + R"("/>
+  <MechanicalObject template=")" +
+         templateName + R"(" name="dofs" position=")" + position + R"("/>
   <UniformMass vertexMass="2"/>
-  <PlaneForceField name="floor" )" + plane + R"(/>
+  <PlaneForceField name="floor" )" +
+         plane + R"(/>
 </Node>)";
 }
 
@@ -34,14 +37,14 @@ TEST(PlaneForceField, FallingPointRestsAtTheDepthMgOverK) {
   EXPECT_NEAR(x[1], -depth, 1e-7);
   EXPECT_NEAR(x[4], -depth, 1e-7);
   EXPECT_NEAR(x[0], 0.3, 1e-12);  // no tangential force at rest
-  EXPECT_GT(lowest, -5 * depth);   // it never went through the floor
+  EXPECT_GT(lowest, -5 * depth);  // it never went through the floor
 }
 
 TEST(PlaneForceField, NonUnitNormalKeepsThePlane) {
   // normal 0 2 0 and d = 2: the plane y = 1, pushing with stiffness k along the unit normal.
   SceneHolder s;
-  ASSERT_TRUE(s.load(fallingScene("Vec3", "0 3 0",
-                                  R"(normal="0 2 0" d="2" stiffness="500" damping="10")")));
+  ASSERT_TRUE(s.load(
+      fallingScene("Vec3", "0 3 0", R"(normal="0 2 0" d="2" stiffness="500" damping="10")")));
   ASSERT_TRUE(s.step(1500));
   EXPECT_NEAR(numbers(s.text("@dofs.position"))[1], 1 - 2 * 9.81 / 500, 1e-7);
 }
@@ -52,6 +55,16 @@ TEST(PlaneForceField, RigidFrameCentreRestsOnTheFloor) {
                                   R"(normal="0 1 0" d="-1" stiffness="2000" damping="20")")));
   ASSERT_TRUE(s.step(1200));
   EXPECT_NEAR(numbers(s.text("@dofs.position"))[1], -1 - 2 * 9.81 / 2000, 1e-7);
+}
+
+// The generic force-field test, with every point a spacing below the plane so that the random
+// perturbation keeps them in contact (the force has a kink at the plane).
+TEST(PlaneForceField, PassesTheForceFieldTest) {
+  checkForceField(R"(<Node name="root" gravity="0 0 0">
+  <MechanicalObject name="dofs" position="0 -1 0  1 -1.2 0  0 -1.1 1  1 -1 1"/>
+  <PlaneForceField name="plane" normal="0.1 1 -0.2" d="0" stiffness="800" damping="3"/>
+</Node>)",
+                  {.zeroAtRest = false});
 }
 
 TEST(PlaneForceField, StiffnessAndEnergyAreConsistentWithTheForce) {

@@ -108,11 +108,11 @@ inline std::vector<double> numbers(const std::string& text) {
 }
 
 /// The points' positions of a Vec3d state as one vector (3n).
-inline Eigen::VectorXd positionsOf(MechanicalState<Vec3Types>& state,
-                                   VecId v = VecId::position()) {
+inline Eigen::VectorXd positionsOf(MechanicalState<Vec3Types>& state, VecId v = VecId::position()) {
   const auto& x = state.readCoord(v);
   Eigen::VectorXd out(3 * static_cast<Eigen::Index>(x.size()));
-  for (std::size_t i = 0; i < x.size(); ++i) out.segment<3>(3 * static_cast<Eigen::Index>(i)) = x[i];
+  for (std::size_t i = 0; i < x.size(); ++i)
+    out.segment<3>(3 * static_cast<Eigen::Index>(i)) = x[i];
   return out;
 }
 

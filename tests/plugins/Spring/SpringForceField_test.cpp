@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "plugins/Spring/MechanicsTestSupport.h"
+#include "support/ForceFieldTest.h"
 
 namespace stroma::test {
 namespace {
@@ -18,6 +19,27 @@ const char* kFourPoints = R"(
   <SpringForceField name="springs"
       spring="0 1 100 0 1.0   1 2 250 0 2.0   2 3 80 0 1.0   0 3 40 0 0   0 2 60 0 0.9219544457"/>
 </Node>)";
+
+// The project's generic force-field test: every pair of a cube's corners joined, at rest.
+TEST(SpringForceField, PassesTheForceFieldTest) {
+  std::string springs;
+  const std::vector<Vec3d> corners{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {2, 2, 0},
+                                   {0, 0, 2}, {2, 0, 2}, {0, 2, 2}, {2, 2, 2}};
+  for (int i = 0; i < 8; ++i)
+    for (int j = i + 1; j < 8; ++j) {
+      char spring[96];
+      std::snprintf(spring, sizeof spring, "%d %d %d 0 %.17g  ", i, j, 100 + 10 * i,
+                    (corners[i] - corners[j]).norm());
+      springs += spring;
+    }
+  const auto report = checkForceField(R"(<Node name="root" gravity="0 0 0">
+  <MechanicalObject name="dofs" position="0 0 0  2 0 0  0 2 0  2 2 0  0 0 2  2 0 2  0 2 2  2 2 2"/>
+  <SpringForceField name="springs" spring=")" +
+                                          springs + R"("/>
+</Node>)",
+                                      {.rotationInvariant = true});
+  EXPECT_LT(report.dForceError, 1e-8) << report.describe();
+}
 
 TEST(SpringForceField, ForceIsMinusEnergyGradient) {
   SceneHolder s;
@@ -48,15 +70,14 @@ TEST(SpringForceField, TangentStiffnessMatchesFiniteDifferences) {
 
 TEST(SpringForceField, RigidMotionGivesNoForce) {
   // Springs at rest in a reference shape, then the shape rotated and translated.
-  const Eigen::Matrix3d R =
-      Eigen::AngleAxisd(0.7, Vec3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Vec3d(1, 2, 3).normalized()).toRotationMatrix();
   const Vec3d t(3, -1, 2);
   const std::vector<Vec3d> reference{{0, 0, 0}, {1, 0, 0}, {0, 2, 0}, {0, 0, 1.5}};
   std::string positions, springs;
   for (const Vec3d& p : reference) {
     const Vec3d q = R * p + t;
-    positions += std::to_string(q.x()) + " " + std::to_string(q.y()) + " " + std::to_string(q.z()) +
-                 "  ";
+    positions +=
+        std::to_string(q.x()) + " " + std::to_string(q.y()) + " " + std::to_string(q.z()) + "  ";
   }
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j)

@@ -1,0 +1,223 @@
+// SPDX-License-Identifier: MIT
+#include "BoxROI.h"
+
+#include <Eigen/LU>
+
+#include "core/Node.h"
+#include "simulation/MechanicalState.h"
+#include "topology/Topology.h"
+
+namespace stroma {
+
+BoxROI::BoxROI() {
+  for (BaseData* input :
+       std::initializer_list<BaseData*>{&d_box, &d_position, &d_edges, &d_triangles, &d_quads,
+                                        &d_tetrahedra, &d_hexahedra, &d_strict})
+    addInput(input);
+  for (BaseData* output : std::initializer_list<BaseData*>{
+           &d_indices, &d_pointsInROI, &d_indicesOut, &d_pointsOutROI, &d_edgeIndices,
+           &d_edgesInROI, &d_triangleIndices, &d_trianglesInROI, &d_quadIndices, &d_quadInROI,
+           &d_tetrahedronIndices, &d_tetrahedraInROI, &d_hexahedronIndices, &d_hexahedraInROI,
+           &d_nbIndices})
+    addOutput(output);
+}
+
+namespace {
+
+bool isGiven(const BaseData& data) { return data.isSet() || data.parent(); }
+
+// Makes `data` follow `parent` (same name, from a state, loader or topology); false on failure.
+bool follow(BaseData& data, BaseData* parent) {
+  std::string error;
+  return parent && data.setParent(parent, error);
+}
+
+}  // namespace
+
+// SOFA's search for the inputs not given: the node's state, else a loader of the node, else the
+// nearest state above; the element lists of the node's topology.
+void BoxROI::findDefaultInputs() {
+  Node* here = node();
+  if (!here) return;
+  if (!isGiven(d_position)) {
+    BaseData* source = nullptr;
+    if (auto* state = here->get<BaseMechanicalState>()) source = state->findData("rest_position");
+    for (const auto& object : here->objects()) {
+      if (source) break;
+      if (object->className().find("Loader") != std::string::npos)
+        source = object->findData("position");
+    }
+    if (!source)
+      if (auto* state = here->getUp<BaseMechanicalState>())
+        source = state->findData("rest_position");
+    if (!follow(d_position, source))
+      msgError(
+          "no position given, and no mechanical state or loader to take them from: give "
+          "position=\"@dofs.rest_position\" or add a MechanicalObject",
+          "position");
+  }
+  if (const Topology* topology = here->get<Topology>()) {
+    auto take = [&](BaseData& data, const Data<bool>& wanted, const BaseData& source) {
+      if (!isGiven(data) && wanted.value()) follow(data, const_cast<BaseData*>(&source));
+    };
+    take(d_edges, d_computeEdges, topology->d_edges);
+    take(d_triangles, d_computeTriangles, topology->d_triangles);
+    take(d_quads, d_computeQuad, topology->d_quads);
+    take(d_tetrahedra, d_computeTetrahedra, topology->d_tetrahedra);
+    take(d_hexahedra, d_computeHexahedra, topology->d_hexahedra);
+  }
+}
+
+void BoxROI::init() {
+  if (d_box.value().empty() && d_orientedBox.value().empty()) {
+    msgWarning("no box given: the unit box '0 0 0 1 1 1' is used (as SOFA)", "box");
+    d_box.setValue({(Vec6d() << 0, 0, 0, 1, 1, 1).finished()});
+  }
+  const auto& boxes = d_box.value();
+  for (std::size_t b = 0; b < boxes.size(); ++b)
+    for (int k = 0; k < 3; ++k)
+      if (boxes[b][k] > boxes[b][k + 3]) {
+        msgWarning("box " + std::to_string(b) + " has min > max along " + "xyz"[k] +
+                       ": the two bounds are swapped",
+                   "box");
+        break;
+      }
+  std::vector<OrientedBox> oriented;
+  if (!computeOrientedBoxes(oriented)) return;
+  findDefaultInputs();
+  // Select now, so that bad element lists are errors of the scene (m_initialized false).
+  setDirty();
+  updateIfDirty();
+  m_initialized = true;
+}
+
+bool BoxROI::computeOrientedBoxes(std::vector<OrientedBox>& boxes) const {
+  boxes.clear();
+  const auto& given = d_orientedBox.value();
+  for (std::size_t i = 0; i < given.size(); ++i) {
+    const Vec<10>& g = given[i];
+    const Vec3d p0 = g.segment<3>(0), p1 = g.segment<3>(3), p2 = g.segment<3>(6);
+    const Vec3d a = p0 - p1, b = p2 - p1;
+    const Vec3d normal = a.cross(b);
+    const double scale = std::max(a.squaredNorm(), b.squaredNorm());
+    if (!(normal.norm() > 1e-12 * scale) || !(scale > 0)) {
+      const_cast<BoxROI*>(this)->msgError(
+          "oriented box " + std::to_string(i) + " is degenerate: p0, p1 and p2 are aligned",
+          "orientedBox");
+      return false;
+    }
+    Mat3d frame;
+    frame << a, b, normal.normalized();
+    boxes.push_back({p1, frame.inverse(), 0.5 * std::abs(g[9])});
+  }
+  return true;
+}
+
+namespace {
+
+// p in one of the boxes (faces included); bounds taken in order whatever the box says.
+bool insideAny(const std::vector<Vec6d>& boxes, const std::vector<BoxROI::OrientedBox>& oriented,
+               const Vec3d& p) {
+  for (const Vec6d& b : boxes) {
+    bool inside = true;
+    for (int k = 0; k < 3 && inside; ++k) {
+      const double lo = std::min(b[k], b[k + 3]), hi = std::max(b[k], b[k + 3]);
+      inside = p[k] >= lo && p[k] <= hi;
+    }
+    if (inside) return true;
+  }
+  constexpr double slack = 1e-12;  // faces through points stay inside despite round-off
+  for (const BoxROI::OrientedBox& o : oriented) {
+    const Vec3d local = o.toLocal * (p - o.corner);
+    if (local[0] >= -slack && local[0] <= 1 + slack && local[1] >= -slack &&
+        local[1] <= 1 + slack && std::abs(local[2]) <= o.halfDepth * (1 + slack) + slack)
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool BoxROI::isInside(const Vec3d& p) const {
+  std::vector<OrientedBox> oriented;
+  computeOrientedBoxes(oriented);
+  return insideAny(d_box.value(), oriented, p);
+}
+
+template <std::size_t N>
+void BoxROI::select(const std::vector<std::array<Index, N>>& elements,
+                    Data<std::vector<unsigned>>& indices,
+                    Data<std::vector<std::array<Index, N>>>& inside, const std::string& field) {
+  const auto& x = d_position.value();
+  const auto& boxes = d_box.value();
+  const auto& oriented = m_oriented;
+  const bool strict = d_strict.value();
+  std::vector<unsigned> selected;
+  std::vector<std::array<Index, N>> kept;
+  std::size_t bad = 0;
+  std::string firstBad;
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const auto& element = elements[e];
+    bool valid = true, in = true;
+    Vec3d barycentre = Vec3d::Zero();
+    for (Index v : element) {
+      if (v >= x.size()) {
+        valid = false;
+        break;
+      }
+      barycentre += x[v];
+      in = in && insideAny(boxes, oriented, x[v]);
+    }
+    if (!valid) {
+      if (bad++ == 0) firstBad = std::to_string(e);
+      continue;
+    }
+    if (!strict) in = insideAny(boxes, oriented, barycentre / static_cast<double>(N));
+    if (in) {
+      selected.push_back(static_cast<unsigned>(e));
+      kept.push_back(element);
+    }
+  }
+  if (bad) {
+    const std::string text = std::to_string(bad) + " elements use points out of range of the " +
+                             std::to_string(x.size()) + " positions (the first: element " +
+                             firstBad + "); they are left out";
+    if (!m_initialized)
+      msgError(text, field);
+    else
+      msgWarning(text, field);
+  }
+  indices.setValue(std::move(selected));
+  inside.setValue(std::move(kept));
+}
+
+void BoxROI::doUpdate() {
+  if (!d_doUpdate.value() && m_computedOnce) return;
+  m_computedOnce = true;
+  const auto& x = d_position.value();
+  const auto& boxes = d_box.value();
+  if (!computeOrientedBoxes(m_oriented)) return;
+  std::vector<unsigned> in, out;
+  std::vector<Vec3d> pointsIn, pointsOut;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (insideAny(boxes, m_oriented, x[i])) {
+      in.push_back(static_cast<unsigned>(i));
+      pointsIn.push_back(x[i]);
+    } else {
+      out.push_back(static_cast<unsigned>(i));
+      pointsOut.push_back(x[i]);
+    }
+  }
+  d_nbIndices.setValue(static_cast<int>(in.size()));
+  d_indices.setValue(std::move(in));
+  d_pointsInROI.setValue(std::move(pointsIn));
+  d_indicesOut.setValue(std::move(out));
+  d_pointsOutROI.setValue(std::move(pointsOut));
+  select(d_edges.value(), d_edgeIndices, d_edgesInROI, "edges");
+  select(d_triangles.value(), d_triangleIndices, d_trianglesInROI, "triangles");
+  select(d_quads.value(), d_quadIndices, d_quadInROI, "quad");
+  select(d_tetrahedra.value(), d_tetrahedronIndices, d_tetrahedraInROI, "tetrahedra");
+  select(d_hexahedra.value(), d_hexahedronIndices, d_hexahedraInROI, "hexahedra");
+}
+
+}  // namespace stroma

@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: MIT
+#include "BoxROI.h"
+#include "core/Plugin.h"
+
+namespace {
+
+void registerComponents(stroma::PluginRegistry& registry) {
+  using namespace stroma;
+  registry.add("BoxROI", "Selects the points and elements inside boxes (a data engine)")
+      .with<BoxROI>("Vec3d");
+}
+
+}  // namespace
+
+extern "C" STROMA_PLUGIN_EXPORT const stroma::PluginEntry* stroma_plugin_entry() {
+  static const stroma::PluginEntry entry = stroma::makePluginEntry(
+      "Engine", "0.1.0", "Data engines: regions of interest", registerComponents);
+  return &entry;
+}
