@@ -2,6 +2,7 @@
 #include "CGLinearSolver.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "simulation/MechanicalOperations.h"
 #include "simulation/Timing.h"
@@ -29,6 +30,7 @@ void CGLinearSolver::init() {
 LinearSolveReport CGLinearSolver::solve(MechanicalOperations& mop, const MechanicalParams& mp,
                                         VecId x, VecId rhs) {
   const bool assembled = isAssembledTemplate(templateName());
+  m_brokeDown = false;
   LinearSolveReport r =
       assembled ? solveAssembled(mop, mp, x, rhs) : solveMatrixFree(mop, mp, x, rhs);
   report(r);
@@ -69,7 +71,11 @@ LinearSolveReport CGLinearSolver::solveMatrixFree(MechanicalOperations& mop,
     mop.computeMBKdx(mp, q, p);
     mop.projectResponse(q);
     const double den = mop.dot(p, q);
-    if (std::abs(den) < threshold || !std::isfinite(den)) break;
+    if (std::abs(den) < threshold || !std::isfinite(den)) {
+      m_brokeDown = true;
+      m_lastDenominator = den;
+      break;
+    }
     const double alpha = rho / den;
     mop.vOp(x, x, p, alpha);
     mop.vOp(r, r, q, -alpha);
@@ -120,7 +126,11 @@ LinearSolveReport CGLinearSolver::solveAssembled(MechanicalOperations& mop,
     if (report.iterations >= d_iterations.value()) break;
     q.noalias() = A * p;
     const double den = p.dot(q);
-    if (std::abs(den) < d_threshold.value() || !std::isfinite(den)) break;
+    if (std::abs(den) < d_threshold.value() || !std::isfinite(den)) {
+      m_brokeDown = true;
+      m_lastDenominator = den;
+      break;
+    }
     const double alpha = rho / den;
     solution += alpha * p;
     r -= alpha * q;
@@ -142,13 +152,23 @@ void CGLinearSolver::report(const LinearSolveReport& r) {
     msgInfo("CG: " + std::to_string(r.iterations) + " iterations, relative residual " +
             std::to_string(r.residual));
   if (r.converged) return;
-  if (m_unconverged++ == 0)
-    msgWarning("CG stopped after " + std::to_string(r.iterations) +
-                   " iterations without converging: relative residual " +
-                   std::to_string(r.residual) + " > tolerance " +
-                   std::to_string(d_tolerance.value()) +
-                   " (raise iterations, or check the system); later ones are counted",
-               "iterations");
+  if (m_unconverged++ == 0) {
+    const auto number = [](double value) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3g", value);
+      return std::string(text);
+    };
+    std::string why = "CG stopped after " + std::to_string(r.iterations) + " iterations";
+    if (m_brokeDown)
+      why += ", when p.Ap = " + number(m_lastDenominator) + " fell below threshold " +
+             number(d_threshold.value()) + ",";
+    why += " without converging: relative residual " + number(r.residual) + " > tolerance " +
+           number(d_tolerance.value());
+    why += m_brokeDown ? " (lower threshold, or check the system)"
+                       : " (raise iterations, or check the system)";
+    msgWarning(why + "; later ones are counted", m_brokeDown ? "threshold" : "iterations");
+  }
+  m_brokeDown = false;
 }
 
 void CGLinearSolver::cleanup() {

@@ -62,6 +62,9 @@ class CGLinearSolver final : public LinearSolver {
 
   AssembledMatrix m_matrix;
   long long m_unconverged = 0;
+  /// Why the last solve stopped short: p.Ap below `threshold` (or not finite), or not.
+  bool m_brokeDown = false;
+  double m_lastDenominator = 0;
   long long m_solves = 0;
 };
 

@@ -34,34 +34,46 @@ LinearSolveReport SparseLDLSolver::solve(MechanicalOperations& mop, const Mechan
   m_ldlt.factorize(A);
   d_factorizations.setValue(d_factorizations.value() + 1);
 
-  // A failed or indefinite factorization: report the first bad pivot where the user can find
-  // it (D is in the permuted order; P^-1 maps it back to the system's rows).
+  // A failed or singular factorization: report the first bad pivot where the user can find
+  // it (D is in the permuted order; P^-1 maps it back to the system's rows). A pivot is bad
+  // when it is zero, not finite, or negligible next to the largest one (a singular system in
+  // floating point). Negative pivots alone are not an error: LDL^T solves a symmetric
+  // indefinite system exactly (a compressed spring or a buckling element makes K indefinite),
+  // but the user is told once, since a dynamic system matrix should be positive definite.
   const Eigen::VectorXd& D = m_ldlt.vectorD();
-  Eigen::Index bad = -1;
-  if (m_ldlt.info() == Eigen::Success) {
-    for (Eigen::Index k = 0; k < D.size() && bad < 0; ++k)
-      if (!(D[k] > 0) || !std::isfinite(D[k])) bad = k;
-  } else {
-    for (Eigen::Index k = 0; k < D.size() && bad < 0; ++k)
-      if (D[k] == 0 || !std::isfinite(D[k])) bad = k;
-    if (bad < 0) bad = 0;
+  const double largestPivot = D.size() > 0 ? D.cwiseAbs().maxCoeff() : 0.0;
+  Eigen::Index bad = -1, negative = -1;
+  for (Eigen::Index k = 0; k < D.size() && bad < 0; ++k) {
+    if (!std::isfinite(D[k]) || std::abs(D[k]) <= 1e-14 * largestPivot)
+      bad = k;
+    else if (D[k] < 0 && negative < 0)
+      negative = k;
   }
+  if (m_ldlt.info() != Eigen::Success && bad < 0) bad = 0;
+  const auto describePivot = [&](Eigen::Index k) {
+    const auto row = static_cast<std::size_t>(m_ldlt.permutationPinv().indices()[k]);
+    char pivot[32];
+    std::snprintf(pivot, sizeof pivot, "%.6g", k < D.size() ? D[k] : 0.0);
+    return "pivot D = " + std::string(pivot) + " at " + describeSystemRow(mop, row);
+  };
   if (bad >= 0 || A.rows() == 0) {
     if (bad >= 0) {
-      const auto row = static_cast<std::size_t>(m_ldlt.permutationPinv().indices()[bad]);
-      char pivot[32];
-      std::snprintf(pivot, sizeof pivot, "%.6g", bad < D.size() ? D[bad] : 0.0);
-      msgError(
-          "the LDL^T factorization failed: the system matrix is not positive definite "
-          "(pivot D = " +
-          std::string(pivot) + " at " + describeSystemRow(mop, row) +
-          "). A point without mass, a stiffness of the wrong sign, or a static system "
-          "that is not held in place make it singular or indefinite");
+      msgError("the LDL^T factorization failed: the system matrix is singular (" +
+               describePivot(bad) +
+               "). A point without mass, a stiffness of the wrong sign, or a static system "
+               "that is not held in place make it singular");
       report.converged = false;
       report.residual = 1;
     }
     mop.scatter(Eigen::VectorXd::Zero(A.rows()), x);
     return report;
+  }
+  if (negative >= 0 && !m_reportedIndefinite) {
+    m_reportedIndefinite = true;
+    msgWarning("the system matrix is indefinite (" + describePivot(negative) +
+               "); LDL^T still solves it, but a negative stiffness (compressed springs, "
+               "buckling or inverted elements) larger than the mass term can make the "
+               "integration unstable; reported once");
   }
   d_LNnz.setValue(static_cast<int>(m_ldlt.matrixL().nestedExpression().nonZeros()));
 

@@ -43,6 +43,7 @@ class SparseLDLSolver final : public LinearSolver {
  private:
   AssembledMatrix m_matrix;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> m_ldlt;
+  bool m_reportedIndefinite = false;
   std::uint64_t m_analyzedRevision = 0;  ///< patternRevision() of the analysis; 0: none
   Eigen::VectorXd m_rhs, m_solution;
 };

@@ -94,5 +94,49 @@ TEST(CGLinearSolver, AcceptsTheUnsuffixedSofaTemplates) {
   }
 }
 
+// CG that stops short says so once, with the residual it reached and why it stopped; the
+// number of unconverged solves is summed up when the scene ends.
+std::vector<Message> warningsOf(const MessageLog& log) {
+  std::vector<Message> warnings;
+  for (const Message& m : log.messages())
+    if (m.level == MessageLevel::warning) warnings.push_back(m);
+  return warnings;
+}
+
+TEST(CGLinearSolver, SaysOnceThatItStoppedAtTheIterationLimit) {
+  std::vector<Message> warnings;
+  {
+    SolverScene s(scaledScene(R"(<CGLinearSolver name="cg" iterations="2" tolerance="1e-14"
+        threshold="1e-300"/>)"));
+    ASSERT_TRUE(s.loaded()) << s.log();
+    for (int n = 0; n < 3; ++n) ASSERT_TRUE(s.step()) << s.log();
+    warnings = warningsOf(s.scene().log());
+    ASSERT_EQ(warnings.size(), 1u) << s.log();
+  }
+  const Message& m = warnings.front();
+  EXPECT_EQ(m.field, "iterations");
+  EXPECT_NE(m.text.find("CG stopped after 2 iterations without converging: relative residual "),
+            std::string::npos)
+      << m.text;
+  EXPECT_NE(m.text.find("> tolerance 1e-14 (raise iterations"), std::string::npos) << m.text;
+}
+
+TEST(CGLinearSolver, SaysWhenTheDenominatorFallsBelowTheThreshold) {
+  SolverScene s(scaledScene(R"(<CGLinearSolver name="cg" iterations="100" tolerance="1e-14"
+      threshold="1e30"/>)"));
+  ASSERT_TRUE(s.loaded()) << s.log();
+  ASSERT_TRUE(s.step()) << s.log();
+  const std::vector<Message> warnings = warningsOf(s.scene().log());
+  ASSERT_EQ(warnings.size(), 1u) << s.log();
+  EXPECT_EQ(warnings.front().field, "threshold");
+  EXPECT_NE(warnings.front().text.find("CG stopped after 0 iterations, when p.Ap = "),
+            std::string::npos)
+      << warnings.front().text;
+  EXPECT_NE(warnings.front().text.find("fell below threshold 1e+30, without converging: "
+                                       "relative residual 1 > tolerance 1e-14"),
+            std::string::npos)
+      << warnings.front().text;
+}
+
 }  // namespace
 }  // namespace stroma::test
