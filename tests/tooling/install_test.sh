@@ -105,6 +105,6 @@ if grep -q "file=$build_dir/lib/" "$work/doc_builtin.log"; then
   fail "the installed stroma loaded a library from the build tree:" \
     "$(grep "file=$build_dir/lib/" "$work/doc_builtin.log" | head -1)"
 fi
-expect check_default 0 "$stroma" check "$prefix/share/stroma/scenes/default.scn"
+expect check_default 0 "$stroma" check "$prefix/share/stroma/scenes/organ/Organ.scn"
 
 echo "install_test: OK (prefix $prefix, plugin $plugins)"

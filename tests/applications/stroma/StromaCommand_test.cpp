@@ -95,7 +95,7 @@ bool has(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
-const std::string kDefaultScene = std::string(STROMA_SOURCE_DIR) + "/scenes/default.scn";
+const std::string kKernelScene = std::string(STROMA_SOURCE_DIR) + "/scenes/kernel/Kernel.scn";
 
 /// A scene stepping a TestCounter, which fails at `failAtStep` (0: never).
 std::string counterScene(int failAtStep) {
@@ -269,29 +269,29 @@ TEST(StromaCommand, NoArgumentsIsAUsageError) {
 }
 
 TEST(StromaCommand, UnknownCommandSuggestsTheClosest) {
-  const CommandResult r = runStroma({"rnu", kDefaultScene});
+  const CommandResult r = runStroma({"rnu", kKernelScene});
   EXPECT_EQ(r.exitCode, 2) << show(r);
   EXPECT_TRUE(has(r.err, "unknown command 'rnu'; did you mean 'run'?")) << show(r);
   EXPECT_TRUE(r.out.empty()) << show(r);
 }
 
 TEST(StromaCommand, UnknownOptionSuggestsTheClosest) {
-  CommandResult r = runStroma({"run", "--step", "3", kDefaultScene});
+  CommandResult r = runStroma({"run", "--step", "3", kKernelScene});
   EXPECT_EQ(r.exitCode, 2) << show(r);
   EXPECT_TRUE(has(r.err, "unknown option --step; did you mean '--steps'?")) << show(r);
-  r = runStroma({"check", "--verbos", kDefaultScene});
+  r = runStroma({"check", "--verbos", kKernelScene});
   EXPECT_EQ(r.exitCode, 2) << show(r);
   EXPECT_TRUE(has(r.err, "did you mean '--verbose'?")) << show(r);
 }
 
 TEST(StromaCommand, BadOptionValuesAreUsageErrors) {
-  CommandResult r = runStroma({"run", "-n", "many", kDefaultScene});
+  CommandResult r = runStroma({"run", "-n", "many", kKernelScene});
   EXPECT_EQ(r.exitCode, 2) << show(r);
   EXPECT_TRUE(has(r.err, "option -n expects an integer >= 0, got 'many'")) << show(r);
-  r = runStroma({"run", "--dt", "-1", kDefaultScene});
+  r = runStroma({"run", "--dt", "-1", kKernelScene});
   EXPECT_EQ(r.exitCode, 2) << show(r);
   EXPECT_TRUE(has(r.err, "--dt expects a positive number")) << show(r);
-  r = runStroma({"run", "--export-every", "2", kDefaultScene});
+  r = runStroma({"run", "--export-every", "2", kKernelScene});
   EXPECT_EQ(r.exitCode, 2) << show(r);
   EXPECT_TRUE(has(r.err, "--export-every needs --export-state")) << show(r);
   r = runStroma({"run"});
@@ -301,10 +301,10 @@ TEST(StromaCommand, BadOptionValuesAreUsageErrors) {
 
 // --- check --------------------------------------------------------------------------------------
 
-TEST(StromaCommand, CheckAcceptsTheDefaultScene) {
-  const CommandResult r = runStroma({"check", kDefaultScene});
+TEST(StromaCommand, CheckAcceptsTheKernelScene) {
+  const CommandResult r = runStroma({"check", kKernelScene});
   EXPECT_EQ(r.exitCode, 0) << show(r);
-  EXPECT_TRUE(has(r.out, kDefaultScene + ": OK (")) << show(r);
+  EXPECT_TRUE(has(r.out, kKernelScene + ": OK (")) << show(r);
   EXPECT_TRUE(has(r.out, "plugins loaded:")) << show(r);
   EXPECT_EQ(r.err, "") << show(r);
 }
@@ -364,9 +364,9 @@ TEST(StromaCommand, DataPathOptionAndVariableAreSearched) {
 // --- run ----------------------------------------------------------------------------------------
 
 TEST(StromaCommand, RunPrintsTheTimingSummary) {
-  const CommandResult r = runStroma({"run", "-n", "5", kDefaultScene});
+  const CommandResult r = runStroma({"run", "-n", "5", kKernelScene});
   EXPECT_EQ(r.exitCode, 0) << show(r);
-  EXPECT_TRUE(has(r.out, "Ran 5 steps of " + kDefaultScene)) << show(r);
+  EXPECT_TRUE(has(r.out, "Ran 5 steps of " + kKernelScene)) << show(r);
   EXPECT_TRUE(has(r.out, "simulated time 0.05 s")) << show(r);
   EXPECT_TRUE(has(r.out, "steps/s")) << show(r);
   EXPECT_TRUE(has(r.out, "phase")) << show(r);
@@ -374,7 +374,7 @@ TEST(StromaCommand, RunPrintsTheTimingSummary) {
 }
 
 TEST(StromaCommand, RunWithStepsAndTimeStepOptions) {
-  const CommandResult r = runStroma({"run", "--steps", "4", "--dt", "0.5", kDefaultScene});
+  const CommandResult r = runStroma({"run", "--steps", "4", "--dt", "0.5", kKernelScene});
   EXPECT_EQ(r.exitCode, 0) << show(r);
   EXPECT_TRUE(has(r.out, "Ran 4 steps")) << show(r);
   EXPECT_TRUE(has(r.out, "(dt 0.5 s, simulated time 2 s)")) << show(r);
@@ -384,7 +384,7 @@ TEST(StromaCommand, RunExportsStatesEveryKStepsAndAtTheEnd) {
   TempDir dir;
   const fs::path states = dir.path() / "states.txt";
   const CommandResult r = runStroma(
-      {"run", "-n", "5", "--export-state", states.string(), "--export-every", "2", kDefaultScene});
+      {"run", "-n", "5", "--export-state", states.string(), "--export-every", "2", kKernelScene});
   ASSERT_EQ(r.exitCode, 0) << show(r);
   std::ifstream in(states);
   ASSERT_TRUE(in) << states;
@@ -417,7 +417,7 @@ TEST(StromaCommand, RunExportsOnlyTheFinalStateWithoutExportEvery) {
   TempDir dir;
   const fs::path states = dir.path() / "final.txt";
   const CommandResult r =
-      runStroma({"run", "-n", "3", "--export-state", states.string(), kDefaultScene});
+      runStroma({"run", "-n", "3", "--export-state", states.string(), kKernelScene});
   ASSERT_EQ(r.exitCode, 0) << show(r);
   std::ifstream in(states);
   std::vector<StateSnapshot> snapshots;
@@ -515,7 +515,7 @@ TEST(StromaCommand, CheckWritesLoadErrorsAsJsonLines) {
 
 TEST(StromaCommand, LogJsonToAnUnwritablePathIsAUsageError) {
   const CommandResult r =
-      runStroma({"check", "--log-json", "/nonexistent/dir/log.jsonl", kDefaultScene});
+      runStroma({"check", "--log-json", "/nonexistent/dir/log.jsonl", kKernelScene});
   EXPECT_EQ(r.exitCode, 2) << show(r);
   EXPECT_TRUE(has(r.err, "cannot write the JSON log")) << show(r);
 }
