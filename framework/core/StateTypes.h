@@ -18,6 +18,28 @@ struct Vec3Types {
   static Deriv zeroDeriv() { return Deriv::Zero(); }
 };
 
+/// Points on a line (SOFA's Vec1d): one coordinate per point.
+struct Vec1Types {
+  using Coord = Vec1d;
+  using Deriv = Vec1d;
+  static constexpr const char* name = "Vec1d";
+  static constexpr int coordSize = 1;
+  static constexpr int derivSize = 1;
+  static Coord zeroCoord() { return Coord::Zero(); }
+  static Deriv zeroDeriv() { return Deriv::Zero(); }
+};
+
+/// Points in a plane (SOFA's Vec2d): x and y per point.
+struct Vec2Types {
+  using Coord = Vec2d;
+  using Deriv = Vec2d;
+  static constexpr const char* name = "Vec2d";
+  static constexpr int coordSize = 2;
+  static constexpr int derivSize = 2;
+  static Coord zeroCoord() { return Coord::Zero(); }
+  static Deriv zeroDeriv() { return Deriv::Zero(); }
+};
+
 struct Rigid3Types {
   using Coord = RigidCoord3;
   using Deriv = RigidDeriv3;

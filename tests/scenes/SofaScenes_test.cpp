@@ -59,6 +59,8 @@ const KnownGap kKnownGaps[] = {
      "StateContainer: SOFA's MechanicalObject without positions holds one degree of freedom"},
     {"BDFOdeSolver_spring1d.scn", "expected a multiple of 3 numbers (list of Vec3d), got 1",
      "position", "Topology: a 1D (Vec1) scene gives one number per point; topology points are 3D"},
+    {"TetrahedronDiffusionFEMForceField.scn", "expected 3 numbers in the vertex, got 1", "filename",
+     "MeshIO: SOFA's OBJ loader reads 'v 0' (a scalar per vertex, for a Vec1 state) as a point"},
     {"SofaScene.scn", "broken link '@BeamDOF.position'", "position",
      "Topology: SOFA reads a Rigid3d state's positions as points through text (for drawing)"},
     {"", "file 'mesh/raptor_35kp.obj' not found", "filename",

@@ -10,6 +10,8 @@ void registerComponents(stroma::PluginRegistry& registry) {
   using namespace stroma;
   registry.add("FixedProjectiveConstraint", "Fixes points or rigid frames by projection")
       .with<FixedProjectiveConstraint<Vec3Types>>("Vec3d")
+      .with<FixedProjectiveConstraint<Vec2Types>>("Vec2d")
+      .with<FixedProjectiveConstraint<Vec1Types>>("Vec1d")
       .with<FixedProjectiveConstraint<Rigid3Types>>("Rigid3d")
       .alias("FixedConstraint");
   registry

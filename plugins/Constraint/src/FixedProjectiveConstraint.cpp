@@ -44,6 +44,8 @@ void FixedProjectiveConstraint<DataTypes>::fixedRows(std::vector<std::size_t>& r
   });
 }
 
+template class FixedProjectiveConstraint<Vec1Types>;
+template class FixedProjectiveConstraint<Vec2Types>;
 template class FixedProjectiveConstraint<Vec3Types>;
 template class FixedProjectiveConstraint<Rigid3Types>;
 

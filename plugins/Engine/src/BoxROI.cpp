@@ -9,7 +9,8 @@
 
 namespace stroma {
 
-BoxROI::BoxROI() {
+template <class DataTypes>
+BoxROI<DataTypes>::BoxROI() {
   for (BaseData* input :
        std::initializer_list<BaseData*>{&d_box, &d_position, &d_edges, &d_triangles, &d_quads,
                                         &d_tetrahedra, &d_hexahedra, &d_strict})
@@ -32,11 +33,20 @@ bool follow(BaseData& data, BaseData* parent) {
   return parent && data.setParent(parent, error);
 }
 
+// Where a point is in 3D: points of 1 or 2 coordinates have the others 0.
+template <int N>
+Vec3d toPoint3(const Vec<N>& p) {
+  Vec3d q = Vec3d::Zero();
+  q.head<N>() = p;
+  return q;
+}
+
 }  // namespace
 
 // SOFA's search for the inputs not given: the node's state, else a loader of the node, else the
 // nearest state above; the element lists of the node's topology.
-void BoxROI::findDefaultInputs() {
+template <class DataTypes>
+void BoxROI<DataTypes>::findDefaultInputs() {
   Node* here = node();
   if (!here) return;
   if (!isGiven(d_position)) {
@@ -68,7 +78,8 @@ void BoxROI::findDefaultInputs() {
   }
 }
 
-void BoxROI::init() {
+template <class DataTypes>
+void BoxROI<DataTypes>::init() {
   if (d_box.value().empty() && d_orientedBox.value().empty()) {
     msgWarning("no box given: the unit box '0 0 0 1 1 1' is used (as SOFA)", "box");
     d_box.setValue({(Vec6d() << 0, 0, 0, 1, 1, 1).finished()});
@@ -91,7 +102,8 @@ void BoxROI::init() {
   m_initialized = true;
 }
 
-bool BoxROI::computeOrientedBoxes(std::vector<OrientedBox>& boxes) const {
+template <class DataTypes>
+bool BoxROI<DataTypes>::computeOrientedBoxes(std::vector<OrientedBox>& boxes) const {
   boxes.clear();
   const auto& given = d_orientedBox.value();
   for (std::size_t i = 0; i < given.size(); ++i) {
@@ -116,7 +128,7 @@ bool BoxROI::computeOrientedBoxes(std::vector<OrientedBox>& boxes) const {
 namespace {
 
 // p in one of the boxes (faces included); bounds taken in order whatever the box says.
-bool insideAny(const std::vector<Vec6d>& boxes, const std::vector<BoxROI::OrientedBox>& oriented,
+bool insideAny(const std::vector<Vec6d>& boxes, const std::vector<internal::OrientedBox>& oriented,
                const Vec3d& p) {
   for (const Vec6d& b : boxes) {
     bool inside = true;
@@ -127,7 +139,7 @@ bool insideAny(const std::vector<Vec6d>& boxes, const std::vector<BoxROI::Orient
     if (inside) return true;
   }
   constexpr double slack = 1e-12;  // faces through points stay inside despite round-off
-  for (const BoxROI::OrientedBox& o : oriented) {
+  for (const internal::OrientedBox& o : oriented) {
     const Vec3d local = o.toLocal * (p - o.corner);
     if (local[0] >= -slack && local[0] <= 1 + slack && local[1] >= -slack &&
         local[1] <= 1 + slack && std::abs(local[2]) <= o.halfDepth * (1 + slack) + slack)
@@ -138,16 +150,19 @@ bool insideAny(const std::vector<Vec6d>& boxes, const std::vector<BoxROI::Orient
 
 }  // namespace
 
-bool BoxROI::isInside(const Vec3d& p) const {
+template <class DataTypes>
+bool BoxROI<DataTypes>::isInside(const Vec3d& p) const {
   std::vector<OrientedBox> oriented;
   computeOrientedBoxes(oriented);
   return insideAny(d_box.value(), oriented, p);
 }
 
+template <class DataTypes>
 template <std::size_t N>
-void BoxROI::select(const std::vector<std::array<Index, N>>& elements,
-                    Data<std::vector<unsigned>>& indices,
-                    Data<std::vector<std::array<Index, N>>>& inside, const std::string& field) {
+void BoxROI<DataTypes>::select(const std::vector<std::array<Index, N>>& elements,
+                               Data<std::vector<unsigned>>& indices,
+                               Data<std::vector<std::array<Index, N>>>& inside,
+                               const std::string& field) {
   const auto& x = d_position.value();
   const auto& boxes = d_box.value();
   const auto& oriented = m_oriented;
@@ -165,8 +180,9 @@ void BoxROI::select(const std::vector<std::array<Index, N>>& elements,
         valid = false;
         break;
       }
-      barycentre += x[v];
-      in = in && insideAny(boxes, oriented, x[v]);
+      const Vec3d p = toPoint3(x[v]);
+      barycentre += p;
+      in = in && insideAny(boxes, oriented, p);
     }
     if (!valid) {
       if (bad++ == 0) firstBad = std::to_string(e);
@@ -191,16 +207,17 @@ void BoxROI::select(const std::vector<std::array<Index, N>>& elements,
   inside.setValue(std::move(kept));
 }
 
-void BoxROI::doUpdate() {
+template <class DataTypes>
+void BoxROI<DataTypes>::doUpdate() {
   if (!d_doUpdate.value() && m_computedOnce) return;
   m_computedOnce = true;
   const auto& x = d_position.value();
   const auto& boxes = d_box.value();
   if (!computeOrientedBoxes(m_oriented)) return;
   std::vector<unsigned> in, out;
-  std::vector<Vec3d> pointsIn, pointsOut;
+  VecCoord pointsIn, pointsOut;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    if (insideAny(boxes, m_oriented, x[i])) {
+    if (insideAny(boxes, m_oriented, toPoint3(x[i]))) {
       in.push_back(static_cast<unsigned>(i));
       pointsIn.push_back(x[i]);
     } else {
@@ -219,5 +236,9 @@ void BoxROI::doUpdate() {
   select(d_tetrahedra.value(), d_tetrahedronIndices, d_tetrahedraInROI, "tetrahedra");
   select(d_hexahedra.value(), d_hexahedronIndices, d_hexahedraInROI, "hexahedra");
 }
+
+template class BoxROI<Vec1Types>;
+template class BoxROI<Vec2Types>;
+template class BoxROI<Vec3Types>;
 
 }  // namespace stroma

@@ -4,10 +4,20 @@
 #include <vector>
 
 #include "core/Base.h"
-#include "core/Types.h"
+#include "core/StateTypes.h"
 #include "topology/TopologyTypes.h"
 
 namespace stroma {
+
+namespace internal {
+/// An oriented box as a frame: p = corner + s a + t b + w n is inside for s, t in [0, 1] and
+/// |w| <= halfDepth; `toLocal` maps p - corner to (s, t, w).
+struct OrientedBox {
+  Vec3d corner;
+  Mat3d toLocal;
+  double halfDepth;
+};
+}  // namespace internal
 
 /// Selects the points, and the elements, inside axis-aligned boxes (SOFA's BoxROI). A data
 /// engine: its outputs are recomputed when read after an input changed, so that
@@ -22,8 +32,16 @@ namespace stroma {
 /// its points are (`strict`, the default) or when its barycentre is.
 /// Outputs: indices and pointsInROI, indicesOut and pointsOutROI, and per element type the
 /// indices of the elements inside and the elements themselves, nbIndices.
+///
+/// Templated on the kind of points: Vec3d, and Vec2d and Vec1d, whose missing coordinates are 0
+/// when tested against the boxes (SOFA's BoxROI<Vec2d>, <Vec1d>).
+template <class DataTypes>
 class BoxROI final : public Base, public DataEngine {
  public:
+  using Coord = typename DataTypes::Coord;
+  using VecCoord = std::vector<Coord>;
+  using OrientedBox = internal::OrientedBox;
+
   Data<std::vector<Vec6d>> d_box{
       this, "box", {}, "Boxes 'xmin ymin zmin xmax ymax zmax' (nbBoxes x 6).", {.unit = "m"}};
   Data<std::vector<Vec<10>>> d_orientedBox{
@@ -33,12 +51,12 @@ class BoxROI final : public Base, public DataEngine {
       "Oriented boxes 'p0 p1 p2 depth' (nbBoxes x 10): the parallelogram of corners p0, p1, p2 "
       "and p0 + p2 - p1, extruded by depth/2 on each side.",
       {.unit = "m"}};
-  Data<std::vector<Vec3d>> d_position{this,
-                                      "position",
-                                      {},
-                                      "Points to select from (nbPoints x 3); default: the rest "
-                                      "positions of the node's mechanical state.",
-                                      {.unit = "m"}};
+  Data<VecCoord> d_position{this,
+                            "position",
+                            {},
+                            "Points to select from (nbPoints x coordinates); default: the rest "
+                            "positions of the node's mechanical state.",
+                            {.unit = "m"}};
   Data<std::vector<Edge>> d_edges{this, "edges", {}, "Edges to select from."};
   Data<std::vector<Triangle>> d_triangles{this, "triangles", {}, "Triangles to select from."};
   Data<std::vector<Quad>> d_quads{this, "quad", {}, "Quads to select from."};
@@ -63,11 +81,11 @@ class BoxROI final : public Base, public DataEngine {
 
   Data<std::vector<unsigned>> d_indices{
       this, "indices", {}, "Indices of the points inside.", {.output = true}};
-  Data<std::vector<Vec3d>> d_pointsInROI{
+  Data<VecCoord> d_pointsInROI{
       this, "pointsInROI", {}, "Points inside.", {.unit = "m", .output = true}};
   Data<std::vector<unsigned>> d_indicesOut{
       this, "indicesOut", {}, "Indices of the points outside.", {.output = true}};
-  Data<std::vector<Vec3d>> d_pointsOutROI{
+  Data<VecCoord> d_pointsOutROI{
       this, "pointsOutROI", {}, "Points outside.", {.unit = "m", .output = true}};
   Data<std::vector<unsigned>> d_edgeIndices{
       this, "edgeIndices", {}, "Indices of the edges inside.", {.output = true}};
@@ -106,14 +124,6 @@ class BoxROI final : public Base, public DataEngine {
 
   /// True when p is in one of the boxes or oriented boxes (faces included).
   bool isInside(const Vec3d& p) const;
-
-  /// An oriented box as a frame: p = corner + s a + t b + w n is inside for s, t in [0, 1] and
-  /// |w| <= halfDepth; `toLocal` maps p - corner to (s, t, w).
-  struct OrientedBox {
-    Vec3d corner;
-    Mat3d toLocal;
-    double halfDepth;
-  };
 
  protected:
   void doUpdate() override;

@@ -7,7 +7,9 @@ namespace {
 void registerComponents(stroma::PluginRegistry& registry) {
   using namespace stroma;
   registry.add("BoxROI", "Selects the points and elements inside boxes (a data engine)")
-      .with<BoxROI>("Vec3d");
+      .with<BoxROI<Vec3Types>>("Vec3d")
+      .with<BoxROI<Vec2Types>>("Vec2d")
+      .with<BoxROI<Vec1Types>>("Vec1d");
 }
 
 }  // namespace

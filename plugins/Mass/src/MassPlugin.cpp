@@ -10,6 +10,8 @@ void registerComponents(stroma::PluginRegistry& registry) {
   using namespace stroma;
   registry.add("UniformMass", "The same mass at every point or rigid frame; applies gravity")
       .with<UniformMass<Vec3Types>>("Vec3d")
+      .with<UniformMass<Vec2Types>>("Vec2d")
+      .with<UniformMass<Vec1Types>>("Vec1d")
       .with<UniformMass<Rigid3Types>>("Rigid3d");
   // SOFA scenes also write the mass templates as "Vec3,Vec3" (state and geometry types).
   registry.add("DiagonalMass", "Lumped mass from the volumes of the topology's elements")

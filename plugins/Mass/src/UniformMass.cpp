@@ -83,7 +83,8 @@ void UniformMass<DataTypes>::addForce(const MechanicalParams&, VecDeriv& f, cons
     const Vec3d weight = m.mass * g;
     forEachPoint(f.size(), [&](std::size_t i) { f[i].linear += weight; });
   } else {
-    const Vec3d weight = m * g;
+    // Points of 1 or 2 coordinates take the first components of the gravity, as SOFA does.
+    const Vec<DataTypes::derivSize> weight = m * g.head<DataTypes::derivSize>();
     forEachPoint(f.size(), [&](std::size_t i) { f[i] += weight; });
   }
 }
@@ -96,7 +97,8 @@ double UniformMass<DataTypes>::potentialEnergy(const MechanicalParams&, const Ve
   if constexpr (kRigid) {
     forEachPoint(x.size(), [&](std::size_t i) { e -= m.mass * g.dot(x[i].center); });
   } else {
-    forEachPoint(x.size(), [&](std::size_t i) { e -= m * g.dot(x[i]); });
+    const Vec<DataTypes::coordSize> gravity = g.head<DataTypes::coordSize>();
+    forEachPoint(x.size(), [&](std::size_t i) { e -= m * gravity.dot(x[i]); });
   }
   return e;
 }
@@ -146,7 +148,8 @@ void UniformMass<DataTypes>::addMToMatrix(MatrixAccumulator& matrix, std::size_t
   } else {
     const double s = factor * m;
     forEachPoint(this->mstate()->size(), [&](std::size_t i) {
-      for (std::size_t k = 0; k < 3; ++k) matrix.add(offset + 3 * i + k, offset + 3 * i + k, s);
+      for (std::size_t k = 0; k < block; ++k)
+        matrix.add(offset + block * i + k, offset + block * i + k, s);
     });
   }
 }
@@ -167,6 +170,8 @@ double UniformMass<DataTypes>::kineticEnergy(const VecDeriv& v) const {
   return 0.5 * e;
 }
 
+template class UniformMass<Vec1Types>;
+template class UniformMass<Vec2Types>;
 template class UniformMass<Vec3Types>;
 template class UniformMass<Rigid3Types>;
 

@@ -26,7 +26,8 @@ struct UniformMassType<Rigid3Types> {
 /// The same mass at every point or frame (SOFA's UniformMass): `vertexMass`, or `totalMass`
 /// spread evenly. It applies gravity (the node's) as a force m g at each point or frame centre.
 ///
-/// Points (Vec3d): M is diagonal, m per coordinate.
+/// Points (Vec3d, and Vec2d and Vec1d, which take the first 2 or 1 components of the gravity,
+/// as SOFA does): M is diagonal, m per coordinate.
 /// Rigid frames (Rigid3d): `vertexMass` is "mass volume inertia(9)" (RigidMass.h), the inertia
 /// per unit mass in the body frame. Angular velocities are in the world frame (as in
 /// MechanicalObject), so the 6x6 block of a frame with orientation R is

@@ -7,14 +7,23 @@ namespace stroma {
 
 namespace {
 
-Vec3d scaled(const Vec3d& d, double s) { return s * d; }
+template <int N>
+Vec<N> scaled(const Vec<N>& d, double s) {
+  return s * d;
+}
 RigidDeriv3 scaled(const RigidDeriv3& d, double s) { return {s * d.linear, s * d.angular}; }
-void accumulate(Vec3d& to, const Vec3d& d) { to += d; }
+template <int N>
+void accumulate(Vec<N>& to, const Vec<N>& d) {
+  to += d;
+}
 void accumulate(RigidDeriv3& to, const RigidDeriv3& d) {
   to.linear += d.linear;
   to.angular += d.angular;
 }
-double work(const Vec3d& f, const Vec3d& x) { return f.dot(x); }
+template <int N>
+double work(const Vec<N>& f, const Vec<N>& x) {
+  return f.dot(x);
+}
 double work(const RigidDeriv3& f, const RigidCoord3& x) { return f.linear.dot(x.center); }
 
 }  // namespace
@@ -65,6 +74,8 @@ double ConstantForceField<DataTypes>::potentialEnergy(const MechanicalParams&,
   return e;
 }
 
+template class ConstantForceField<Vec1Types>;
+template class ConstantForceField<Vec2Types>;
 template class ConstantForceField<Vec3Types>;
 template class ConstantForceField<Rigid3Types>;
 

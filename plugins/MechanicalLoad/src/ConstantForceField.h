@@ -6,7 +6,8 @@
 
 namespace stroma {
 
-/// Constant forces on points or rigid frames (SOFA's ConstantForceField): one force per index
+/// Constant forces on points (Vec3d, Vec2d, Vec1d: a force has as many components as a point)
+/// or rigid frames (SOFA's ConstantForceField): one force per index
 /// (`forces`), the same force on each index (`force`), or a total force spread evenly
 /// (`totalForce`). For rigid frames a force is "fx fy fz tx ty tz" (force at the centre and
 /// torque, world frame). Energy: -f.x for the forces (torques do no work that a potential of the

@@ -9,6 +9,8 @@ void registerComponents(stroma::PluginRegistry& registry) {
   using namespace stroma;
   registry.add("ConstantForceField", "Constant forces on points or rigid frames")
       .with<ConstantForceField<Vec3Types>>("Vec3d")
+      .with<ConstantForceField<Vec2Types>>("Vec2d")
+      .with<ConstantForceField<Vec1Types>>("Vec1d")
       .with<ConstantForceField<Rigid3Types>>("Rigid3d");
   registry.add("PlaneForceField", "Penalty plane pushing points back to its free side")
       .with<PlaneForceField<Vec3Types>>("Vec3d")

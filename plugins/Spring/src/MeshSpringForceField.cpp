@@ -17,28 +17,31 @@ double valueOf(const Data<double>& own, const Data<double>& common) {
 
 }  // namespace
 
-void MeshSpringForceField::init() {
-  ForceField<Vec3Types>::init();
-  if (!mstate()) return;
-  m_topology = l_topology ? l_topology.get() : (node() ? node()->getUp<Topology>() : nullptr);
+template <class DataTypes>
+void MeshSpringForceField<DataTypes>::init() {
+  ForceField<DataTypes>::init();
+  if (!this->mstate()) return;
+  m_topology = l_topology ? l_topology.get()
+                          : (this->node() ? this->node()->template getUp<Topology>() : nullptr);
   if (!m_topology) {
-    msgError(
+    this->msgError(
         "needs a topology (MeshTopology, TetrahedronSetTopologyContainer, "
         "RegularGridTopology, ...) in its node or above, or a 'topology' link",
         "topology");
     return;
   }
   if (build() && d_springs.value().empty())
-    msgWarning(
+    this->msgWarning(
         "no spring was made: the topology has no element of a kind with a non-zero "
         "stiffness or damping",
         "stiffness");
 }
 
-bool MeshSpringForceField::build() {
-  const std::size_t n = mstate()->size();
-  const VecCoord& rest = mstate()->readCoord(VecId::restPosition());
-  const VecCoord& x0 = rest.size() == n ? rest : mstate()->readCoord(VecId::position());
+template <class DataTypes>
+bool MeshSpringForceField<DataTypes>::build() {
+  const std::size_t n = this->mstate()->size();
+  const VecCoord& rest = this->mstate()->readCoord(VecId::restPosition());
+  const VecCoord& x0 = rest.size() == n ? rest : this->mstate()->readCoord(VecId::position());
   const Vec2i range = d_localRange.value();
 
   std::vector<LinearSpring> springs;
@@ -90,10 +93,10 @@ bool MeshSpringForceField::build() {
 
   m_topologyRevision = m_topology->revision();
   if (outOfRange) {
-    msgError("the elements of " + m_topology->path() + " use points out of range of the " +
-                 std::to_string(n) + " points of " + mstate()->path() + " (" +
-                 std::to_string(outOfRange) + " pairs)",
-             "topology");
+    this->msgError("the elements of " + m_topology->path() + " use points out of range of the " +
+                       std::to_string(n) + " points of " + this->mstate()->path() + " (" +
+                       std::to_string(outOfRange) + " pairs)",
+                   "topology");
     d_springs.setValue({});
     return false;
   }
@@ -101,29 +104,42 @@ bool MeshSpringForceField::build() {
   return true;
 }
 
-void MeshSpringForceField::refresh() {
-  if (m_topology && isValid() && m_topology->revision() != m_topologyRevision) build();
+template <class DataTypes>
+void MeshSpringForceField<DataTypes>::refresh() {
+  if (m_topology && this->isValid() && m_topology->revision() != m_topologyRevision) build();
 }
 
-void MeshSpringForceField::addForce(const MechanicalParams&, VecDeriv& f, const VecCoord& x,
-                                    const VecDeriv& v) {
+template <class DataTypes>
+void MeshSpringForceField<DataTypes>::addForce(const MechanicalParams&, VecDeriv& f,
+                                               const VecCoord& x, const VecDeriv& v) {
   refresh();
-  addSpringForces(d_springs.value(), {x, x}, v, v, f, f);
+  addSpringForces(d_springs.value(), SpringStates<kDimension>{x, x}, v, v, f, f);
 }
 
-void MeshSpringForceField::addDForce(const MechanicalParams& mp, VecDeriv& df, const VecDeriv& dx) {
-  const VecCoord& x = mstate()->readCoord(mp.x);
-  addSpringDForces(d_springs.value(), {x, x}, dx, dx, df, df, mp.kFactor, mp.bFactor);
+template <class DataTypes>
+void MeshSpringForceField<DataTypes>::addDForce(const MechanicalParams& mp, VecDeriv& df,
+                                                const VecDeriv& dx) {
+  const VecCoord& x = this->mstate()->readCoord(mp.x);
+  addSpringDForces(d_springs.value(), SpringStates<kDimension>{x, x}, dx, dx, df, df, mp.kFactor,
+                   mp.bFactor);
 }
 
-void MeshSpringForceField::addKToMatrix(const MechanicalParams& mp, MatrixAccumulator& matrix,
-                                        std::size_t offset) {
-  const VecCoord& x = mstate()->readCoord(mp.x);
-  addSpringMatrix(d_springs.value(), {x, x}, matrix, offset, offset, mp.kFactor, mp.bFactor);
+template <class DataTypes>
+void MeshSpringForceField<DataTypes>::addKToMatrix(const MechanicalParams& mp,
+                                                   MatrixAccumulator& matrix, std::size_t offset) {
+  const VecCoord& x = this->mstate()->readCoord(mp.x);
+  addSpringMatrix(d_springs.value(), SpringStates<kDimension>{x, x}, matrix, offset, offset,
+                  mp.kFactor, mp.bFactor);
 }
 
-double MeshSpringForceField::potentialEnergy(const MechanicalParams&, const VecCoord& x) const {
-  return springEnergy(d_springs.value(), {x, x});
+template <class DataTypes>
+double MeshSpringForceField<DataTypes>::potentialEnergy(const MechanicalParams&,
+                                                        const VecCoord& x) const {
+  return springEnergy(d_springs.value(), SpringStates<kDimension>{x, x});
 }
+
+template class MeshSpringForceField<Vec1Types>;
+template class MeshSpringForceField<Vec2Types>;
+template class MeshSpringForceField<Vec3Types>;
 
 }  // namespace stroma

@@ -21,8 +21,16 @@ namespace stroma {
 ///
 /// Forces, exact tangent stiffness and energy: SpringKernel.h. The springs are built at init
 /// and again when the topology changes; the built list is the output `spring`.
-class MeshSpringForceField final : public ForceField<Vec3Types> {
+///
+/// Templated on the kind of points: Vec3d, Vec2d, Vec1d (a grid's points keep their first 2 or
+/// 1 coordinates in the state, and the rest lengths are measured there).
+template <class DataTypes>
+class MeshSpringForceField final : public ForceField<DataTypes> {
  public:
+  using typename ForceField<DataTypes>::VecCoord;
+  using typename ForceField<DataTypes>::VecDeriv;
+  static constexpr int kDimension = DataTypes::derivSize;
+
   Data<double> d_stiffness{this,
                            "stiffness",
                            0.0,

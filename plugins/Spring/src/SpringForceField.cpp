@@ -6,22 +6,26 @@
 
 namespace stroma {
 
-SpringForceField::State* SpringForceField::resolveState(const Link<Base>& link) {
+template <class DataTypes>
+typename SpringForceField<DataTypes>::State* SpringForceField<DataTypes>::resolveState(
+    const Link<Base>& link) {
   Base* target = link.get();
   if (auto* state = dynamic_cast<State*>(target)) return state;
   if (auto* node = dynamic_cast<Node*>(target)) {
     if (auto* state = node->get<State>()) return state;
-    msgError("node " + node->path() + " has no Vec3d mechanical state", link.name());
+    msgError("node " + node->path() + " has no " + DataTypes::name + " mechanical state",
+             link.name());
     return nullptr;
   }
-  msgError(target->path() + " is a " + target->className() +
-               ", not a Vec3d mechanical state (or a node holding one)",
+  msgError(target->path() + " is a " + target->className() + ", not a " + DataTypes::name +
+               " mechanical state (or a node holding one)",
            link.name());
   return nullptr;
 }
 
-bool SpringForceField::validate(const std::vector<LinearSpring>& springs,
-                                const std::string& field) {
+template <class DataTypes>
+bool SpringForceField<DataTypes>::validate(const std::vector<LinearSpring>& springs,
+                                           const std::string& field) {
   const std::size_t n1 = m_state1->size(), n2 = m_state2->size();
   std::string bad;
   std::size_t count = 0;
@@ -46,7 +50,8 @@ bool SpringForceField::validate(const std::vector<LinearSpring>& springs,
   return false;
 }
 
-void SpringForceField::init() {
+template <class DataTypes>
+void SpringForceField<DataTypes>::init() {
   for (const Data<FileName>* file : {&d_fileSprings, &d_filename})
     if (!file->value().original.empty())
       msgError("spring files (" + file->value().original +
@@ -65,7 +70,8 @@ void SpringForceField::init() {
   } else {
     m_state1 = m_state2 = node() ? node()->get<State>() : nullptr;
     if (!m_state1)
-      msgError("no Vec3d mechanical state in " + (node() ? node()->path() : std::string("?")) +
+      msgError(std::string("no ") + DataTypes::name + " mechanical state in " +
+                   (node() ? node()->path() : std::string("?")) +
                    ": add one, or give object1 and object2",
                "object1");
   }
@@ -93,7 +99,8 @@ void SpringForceField::init() {
   m_springsVersion = ~0ull;
 }
 
-const std::vector<LinearSpring>& SpringForceField::springs() const {
+template <class DataTypes>
+const std::vector<LinearSpring>& SpringForceField<DataTypes>::springs() const {
   const std::uint64_t version = d_springs.version();
   if (version != m_springsVersion) {
     // Rebuilt only when `spring` changed. Springs outside the states (a run-time edit) are
@@ -116,22 +123,26 @@ const std::vector<LinearSpring>& SpringForceField::springs() const {
   return m_all;
 }
 
-void SpringForceField::accumulateForce(const MechanicalParams& mp, VecId f) {
+template <class DataTypes>
+void SpringForceField<DataTypes>::accumulateForce(const MechanicalParams& mp, VecId f) {
   if (!m_state1 || !m_state2) return;
-  const SpringStates x{m_state1->readCoord(mp.x), m_state2->readCoord(mp.x)};
+  const SpringStates<kDimension> x{m_state1->readCoord(mp.x), m_state2->readCoord(mp.x)};
   addSpringForces(springs(), x, m_state1->readDeriv(mp.v), m_state2->readDeriv(mp.v),
                   m_state1->writeDeriv(f), m_state2->writeDeriv(f));
 }
 
-void SpringForceField::accumulateDForce(const MechanicalParams& mp, VecId df, VecId dx) {
+template <class DataTypes>
+void SpringForceField<DataTypes>::accumulateDForce(const MechanicalParams& mp, VecId df, VecId dx) {
   if (!m_state1 || !m_state2) return;
-  const SpringStates x{m_state1->readCoord(mp.x), m_state2->readCoord(mp.x)};
+  const SpringStates<kDimension> x{m_state1->readCoord(mp.x), m_state2->readCoord(mp.x)};
   addSpringDForces(springs(), x, m_state1->readDeriv(dx), m_state2->readDeriv(dx),
                    m_state1->writeDeriv(df), m_state2->writeDeriv(df), mp.kFactor, mp.bFactor);
 }
 
-void SpringForceField::accumulateKMatrix(const MechanicalParams& mp, MatrixAccumulator& matrix,
-                                         const StateOffsets& offsets) {
+template <class DataTypes>
+void SpringForceField<DataTypes>::accumulateKMatrix(const MechanicalParams& mp,
+                                                    MatrixAccumulator& matrix,
+                                                    const StateOffsets& offsets) {
   if (!m_state1 || !m_state2) return;
   std::size_t offset1 = 0, offset2 = 0;
   const bool has1 = offsets.find(m_state1, offset1);
@@ -145,19 +156,26 @@ void SpringForceField::accumulateKMatrix(const MechanicalParams& mp, MatrixAccum
     }
     return;
   }
-  const SpringStates x{m_state1->readCoord(mp.x), m_state2->readCoord(mp.x)};
+  const SpringStates<kDimension> x{m_state1->readCoord(mp.x), m_state2->readCoord(mp.x)};
   addSpringMatrix(springs(), x, matrix, offset1, offset2, mp.kFactor, mp.bFactor);
 }
 
-double SpringForceField::energy(const MechanicalParams& mp) const {
+template <class DataTypes>
+double SpringForceField<DataTypes>::energy(const MechanicalParams& mp) const {
   if (!m_state1 || !m_state2) return 0;
-  return springEnergy(springs(), {m_state1->readCoord(mp.x), m_state2->readCoord(mp.x)});
+  return springEnergy(
+      springs(), SpringStates<kDimension>{m_state1->readCoord(mp.x), m_state2->readCoord(mp.x)});
 }
 
-std::vector<BaseMechanicalState*> SpringForceField::states() const {
+template <class DataTypes>
+std::vector<BaseMechanicalState*> SpringForceField<DataTypes>::states() const {
   if (!m_state1 || !m_state2) return {};
   if (m_state1 == m_state2) return {m_state1};
   return {m_state1, m_state2};
 }
+
+template class SpringForceField<Vec1Types>;
+template class SpringForceField<Vec2Types>;
+template class SpringForceField<Vec3Types>;
 
 }  // namespace stroma

@@ -16,12 +16,16 @@ namespace stroma {
 /// name the two states (a state or a node holding one); without them both ends are in the
 /// node's state. Forces, exact tangent stiffness and damping: SpringKernel.h.
 ///
+/// Templated on the kind of points: Vec3d, Vec2d, Vec1d (both states of that kind).
+///
 /// The assembled path adds the blocks of both states, each at its own rows; a spring to a state
 /// outside the assembled system (mapped from another solver's) contributes nothing there, which
 /// is reported once.
+template <class DataTypes>
 class SpringForceField final : public BaseForceField {
  public:
-  using State = MechanicalState<Vec3Types>;
+  using State = MechanicalState<DataTypes>;
+  static constexpr int kDimension = DataTypes::derivSize;
 
   Data<std::vector<LinearSpring>> d_springs{
       this,

@@ -13,8 +13,12 @@
 // derivative of the damping force is left out (it is not symmetric); it vanishes at rest.
 // Under compression (l < L) Ks is indefinite: that is the exact tangent, not an approximation.
 // A zero rest length gives the linear spring f1 = ks u, Ks = ks I, defined even at l = 0.
+//
+// N is the number of coordinates of a point: 3, or 2 and 1 for points in a plane or on a line
+// (SOFA's Vec2d, Vec1d). On a line e = +-1 and Ks = ks: the geometric term vanishes.
 #pragma once
 
+#include <Eigen/Core>
 #include <vector>
 
 #include "LinearSpring.h"
@@ -24,41 +28,152 @@
 namespace stroma {
 
 /// What one spring does at given positions and velocities.
+template <int N>
 struct SpringResponse {
-  Vec3d force = Vec3d::Zero();      ///< on the first point; the second gets -force
-  Mat3d stiffness = Mat3d::Zero();  ///< Ks = df1/dp2
-  Mat3d damping = Mat3d::Zero();    ///< Bs = df1/dv2
+  static_assert(N >= 1 && N <= 3, "A spring joins points of 1, 2 or 3 coordinates.");
+  using Matrix = Eigen::Matrix<double, N, N>;
+  Vec<N> force = Vec<N>::Zero();      ///< on the first point; the second gets -force
+  Matrix stiffness = Matrix::Zero();  ///< Ks = df1/dp2
+  Matrix damping = Matrix::Zero();    ///< Bs = df1/dv2
   double energy = 0;
 };
 
 /// Force, derivatives and energy of one spring. An elongation-only spring that is shorter than
 /// its rest length, or a spring of non-zero rest length whose ends coincide (no direction), does
 /// nothing.
-SpringResponse evaluateSpring(const LinearSpring& s, const Vec3d& p1, const Vec3d& p2,
-                              const Vec3d& v1, const Vec3d& v2);
+template <int N>
+SpringResponse<N> evaluateSpring(const LinearSpring& s, const Vec<N>& p1, const Vec<N>& p2,
+                                 const Vec<N>& v1, const Vec<N>& v2);
 
 /// The arrays of the two states a set of springs connects (the same arrays for springs inside
 /// one state). Forces, increments and results are indexed by point.
+template <int N>
 struct SpringStates {
-  const std::vector<Vec3d>& x1;
-  const std::vector<Vec3d>& x2;
+  const std::vector<Vec<N>>& x1;
+  const std::vector<Vec<N>>& x2;
 };
 
 /// f += spring forces at (x, v); returns the elastic energy.
-double addSpringForces(const std::vector<LinearSpring>& springs, const SpringStates& x,
-                       const std::vector<Vec3d>& v1, const std::vector<Vec3d>& v2,
-                       std::vector<Vec3d>& f1, std::vector<Vec3d>& f2);
+template <int N>
+double addSpringForces(const std::vector<LinearSpring>& springs, const SpringStates<N>& x,
+                       const std::vector<Vec<N>>& v1, const std::vector<Vec<N>>& v2,
+                       std::vector<Vec<N>>& f1, std::vector<Vec<N>>& f2);
 /// df += kFactor K dx + bFactor B dx at positions x.
-void addSpringDForces(const std::vector<LinearSpring>& springs, const SpringStates& x,
-                      const std::vector<Vec3d>& dx1, const std::vector<Vec3d>& dx2,
-                      std::vector<Vec3d>& df1, std::vector<Vec3d>& df2, double kFactor,
+template <int N>
+void addSpringDForces(const std::vector<LinearSpring>& springs, const SpringStates<N>& x,
+                      const std::vector<Vec<N>>& dx1, const std::vector<Vec<N>>& dx2,
+                      std::vector<Vec<N>>& df1, std::vector<Vec<N>>& df2, double kFactor,
                       double bFactor);
 /// Adds kFactor K + bFactor B at positions x, the first state's rows from offset1 and the second
 /// one's from offset2.
-void addSpringMatrix(const std::vector<LinearSpring>& springs, const SpringStates& x,
+template <int N>
+void addSpringMatrix(const std::vector<LinearSpring>& springs, const SpringStates<N>& x,
                      MatrixAccumulator& matrix, std::size_t offset1, std::size_t offset2,
                      double kFactor, double bFactor);
 /// Elastic energy at positions x.
-double springEnergy(const std::vector<LinearSpring>& springs, const SpringStates& x);
+template <int N>
+double springEnergy(const std::vector<LinearSpring>& springs, const SpringStates<N>& x);
+
+// Definitions.
+
+template <int N>
+SpringResponse<N> evaluateSpring(const LinearSpring& s, const Vec<N>& p1, const Vec<N>& p2,
+                                 const Vec<N>& v1, const Vec<N>& v2) {
+  using Matrix = typename SpringResponse<N>::Matrix;
+  SpringResponse<N> r;
+  const Vec<N> u = p2 - p1;
+  const double l = u.norm();
+  if (s.elongationOnly && l < s.restLength) return r;
+  const double tiny = 1e-14 * (1 + s.restLength);
+  if (s.restLength == 0) {
+    // Linear spring: f1 = ks u, defined everywhere.
+    r.force = s.ks * u;
+    r.stiffness = s.ks * Matrix::Identity();
+    r.energy = 0.5 * s.ks * u.squaredNorm();
+    if (l > tiny) {
+      const Vec<N> e = u / l;
+      r.force += s.kd * (v2 - v1).dot(e) * e;
+      r.damping = s.kd * e * e.transpose();
+    }
+    return r;
+  }
+  if (l <= tiny) return r;  // no direction: the ends coincide
+  const Vec<N> e = u / l;
+  const Matrix eeT = e * e.transpose();
+  const double stretch = l - s.restLength;
+  r.force = (s.ks * stretch + s.kd * (v2 - v1).dot(e)) * e;
+  r.stiffness = s.ks * (eeT + (stretch / l) * (Matrix::Identity() - eeT));
+  r.damping = s.kd * eeT;
+  r.energy = 0.5 * s.ks * stretch * stretch;
+  return r;
+}
+
+namespace internal {
+// Adds an N x N block at (row, col).
+template <int N>
+void addBlock(MatrixAccumulator& matrix, std::size_t row, std::size_t col,
+              const Eigen::Matrix<double, N, N>& block) {
+  for (int i = 0; i < N; ++i)
+    for (int j = 0; j < N; ++j) matrix.add(row + i, col + j, block(i, j));
+}
+}  // namespace internal
+
+template <int N>
+double addSpringForces(const std::vector<LinearSpring>& springs, const SpringStates<N>& x,
+                       const std::vector<Vec<N>>& v1, const std::vector<Vec<N>>& v2,
+                       std::vector<Vec<N>>& f1, std::vector<Vec<N>>& f2) {
+  const Vec<N> zero = Vec<N>::Zero();
+  double energy = 0;
+  for (const LinearSpring& s : springs) {
+    const SpringResponse<N> r =
+        evaluateSpring<N>(s, x.x1[s.m1], x.x2[s.m2], s.m1 < v1.size() ? v1[s.m1] : zero,
+                          s.m2 < v2.size() ? v2[s.m2] : zero);
+    f1[s.m1] += r.force;
+    f2[s.m2] -= r.force;
+    energy += r.energy;
+  }
+  return energy;
+}
+
+template <int N>
+void addSpringDForces(const std::vector<LinearSpring>& springs, const SpringStates<N>& x,
+                      const std::vector<Vec<N>>& dx1, const std::vector<Vec<N>>& dx2,
+                      std::vector<Vec<N>>& df1, std::vector<Vec<N>>& df2, double kFactor,
+                      double bFactor) {
+  const Vec<N> zero = Vec<N>::Zero();
+  for (const LinearSpring& s : springs) {
+    const SpringResponse<N> r = evaluateSpring<N>(s, x.x1[s.m1], x.x2[s.m2], zero, zero);
+    const Vec<N> d = dx2[s.m2] - dx1[s.m1];
+    const Vec<N> df = kFactor * (r.stiffness * d) + bFactor * (r.damping * d);
+    df1[s.m1] += df;
+    df2[s.m2] -= df;
+  }
+}
+
+template <int N>
+void addSpringMatrix(const std::vector<LinearSpring>& springs, const SpringStates<N>& x,
+                     MatrixAccumulator& matrix, std::size_t offset1, std::size_t offset2,
+                     double kFactor, double bFactor) {
+  const Vec<N> zero = Vec<N>::Zero();
+  for (const LinearSpring& s : springs) {
+    const SpringResponse<N> r = evaluateSpring<N>(s, x.x1[s.m1], x.x2[s.m2], zero, zero);
+    const typename SpringResponse<N>::Matrix K = kFactor * r.stiffness + bFactor * r.damping;
+    const std::size_t row1 = offset1 + N * std::size_t{s.m1};
+    const std::size_t row2 = offset2 + N * std::size_t{s.m2};
+    internal::addBlock<N>(matrix, row1, row1, -K);
+    internal::addBlock<N>(matrix, row1, row2, K);
+    internal::addBlock<N>(matrix, row2, row1, K);
+    internal::addBlock<N>(matrix, row2, row2, -K);
+  }
+}
+
+template <int N>
+double springEnergy(const std::vector<LinearSpring>& springs, const SpringStates<N>& x) {
+  const Vec<N> zero = Vec<N>::Zero();
+  double energy = 0;
+  for (const LinearSpring& s : springs)
+    energy += evaluateSpring<N>(s, x.x1[s.m1], x.x2[s.m2], zero, zero).energy;
+  return energy;
+}
 
 }  // namespace stroma

@@ -8,10 +8,14 @@ namespace {
 void registerComponents(stroma::PluginRegistry& registry) {
   using namespace stroma;
   registry.add("SpringForceField", "Linear springs between points of one or two states")
-      .with<SpringForceField>("Vec3d")
+      .with<SpringForceField<Vec3Types>>("Vec3d")
+      .with<SpringForceField<Vec2Types>>("Vec2d")
+      .with<SpringForceField<Vec1Types>>("Vec1d")
       .alias("StiffSpringForceField");
   registry.add("MeshSpringForceField", "Linear springs along the edges of a mesh's elements")
-      .with<MeshSpringForceField>("Vec3d");
+      .with<MeshSpringForceField<Vec3Types>>("Vec3d")
+      .with<MeshSpringForceField<Vec2Types>>("Vec2d")
+      .with<MeshSpringForceField<Vec1Types>>("Vec1d");
 }
 
 }  // namespace

@@ -19,15 +19,23 @@ Quat rotationFromDegrees(const Vec3d& degrees) {
               Eigen::AngleAxisd(r.x(), Vec3d::UnitX()));
 }
 
-void transform(Vec3d& p, const Vec3d& scale, const Quat& q, const Vec3d& t) {
-  p = q * p.cwiseProduct(scale) + t;
+// Points of fewer than 3 coordinates are transformed in 3D (missing coordinates 0) and keep
+// their first N coordinates, as SOFA does.
+template <int N>
+void transform(Vec<N>& p, const Vec3d& scale, const Quat& q, const Vec3d& t) {
+  Vec3d p3 = Vec3d::Zero();
+  p3.head<N>() = p;
+  p = (q * p3.cwiseProduct(scale) + t).head<N>();
 }
 void transform(RigidCoord3& c, const Vec3d& scale, const Quat& q, const Vec3d& t) {
   c.center = q * c.center.cwiseProduct(scale) + t;
   c.orientation = (q * c.orientation).normalized();
 }
 
-void flatten(const Vec3d& v, std::vector<double>& out) { out.insert(out.end(), v.data(), v.data() + 3); }
+template <int N>
+void flatten(const Vec<N>& v, std::vector<double>& out) {
+  out.insert(out.end(), v.data(), v.data() + N);
+}
 void flatten(const RigidCoord3& c, std::vector<double>& out) {
   flatten(c.center, out);
   out.insert(out.end(), {c.orientation.x(), c.orientation.y(), c.orientation.z(), c.orientation.w()});
@@ -37,7 +45,10 @@ void flatten(const RigidDeriv3& d, std::vector<double>& out) {
   flatten(d.angular, out);
 }
 
-void scaleCoord(Vec3d& p, double s) { p *= s; }
+template <int N>
+void scaleCoord(Vec<N>& p, double s) {
+  p *= s;
+}
 void scaleCoord(RigidCoord3& c, double s) { c.center *= s; }
 
 }  // namespace
@@ -45,11 +56,18 @@ void scaleCoord(RigidCoord3& c, double s) { c.center *= s; }
 template <class DataTypes>
 void MechanicalObject<DataTypes>::init() {
   // As SOFA: a state given neither positions nor a size takes the points of the topology in
-  // its node (a RegularGridTopology, a container that took a loader's points).
-  if constexpr (std::is_same_v<DataTypes, Vec3Types>) {
+  // its node (a RegularGridTopology, a container that took a loader's points). Topology points
+  // are 3D: a Vec1d or Vec2d state keeps their first 1 or 2 coordinates.
+  if constexpr (!std::is_same_v<DataTypes, Rigid3Types>) {
     if (d_position.value().empty() && d_size.value() == 0 && this->node())
       if (const Topology* topology = this->node()->template get<Topology>())
-        if (!topology->positions().empty()) d_position.setValue(topology->positions());
+        if (!topology->positions().empty()) {
+          VecCoord points;
+          points.reserve(topology->positions().size());
+          for (const Vec3d& p : topology->positions())
+            points.push_back(p.head<DataTypes::coordSize>());
+          d_position.setValue(std::move(points));
+        }
   }
   VecCoord& x = d_position.edit();
   if (x.empty() && d_size.value() > 0) x.assign(static_cast<std::size_t>(d_size.value()), DataTypes::zeroCoord());
@@ -197,10 +215,11 @@ void MechanicalObject<DataTypes>::vFree(VecId) {
 
 namespace {
 
-// Element operations. Vec3d: plain vectors. Rigid: center and orientation; an increment's
-// angular part is a rotation vector.
-void combine(Vec3d& out, const Vec3d* a, const Vec3d* b, double f) {
-  out = (a ? *a : Vec3d::Zero()) + (b ? Vec3d(*b * f) : Vec3d::Zero());
+// Element operations. Vec1d, Vec2d, Vec3d: plain vectors. Rigid: center and orientation; an
+// increment's angular part is a rotation vector.
+template <int N>
+void combine(Vec<N>& out, const Vec<N>* a, const Vec<N>* b, double f) {
+  out = (a ? *a : Vec<N>::Zero()) + (b ? Vec<N>(*b * f) : Vec<N>::Zero());
 }
 void combine(RigidDeriv3& out, const RigidDeriv3* a, const RigidDeriv3* b, double f) {
   RigidDeriv3 r;
@@ -211,7 +230,10 @@ void combine(RigidDeriv3& out, const RigidDeriv3* a, const RigidDeriv3* b, doubl
   }
   out = r;
 }
-void integrate(Vec3d& out, const Vec3d* a, const Vec3d* b, double f) { combine(out, a, b, f); }
+template <int N>
+void integrate(Vec<N>& out, const Vec<N>* a, const Vec<N>* b, double f) {
+  combine(out, a, b, f);
+}
 void integrate(RigidCoord3& out, const RigidCoord3* a, const RigidDeriv3* b, double f) {
   RigidCoord3 r;
   if (a) r = *a;
@@ -224,23 +246,35 @@ void integrate(RigidCoord3& out, const RigidCoord3* a, const RigidDeriv3* b, dou
   out = r;
 }
 // coord = a + b f with both coords: positions add; a rigid orientation is copied from a.
-void combineCoords(Vec3d& out, const Vec3d* a, const Vec3d* b, double f) { combine(out, a, b, f); }
+template <int N>
+void combineCoords(Vec<N>& out, const Vec<N>* a, const Vec<N>* b, double f) {
+  combine(out, a, b, f);
+}
 void combineCoords(RigidCoord3& out, const RigidCoord3* a, const RigidCoord3* b, double f) {
   RigidCoord3 r;
   if (a) r = *a;
   if (b) r.center += b->center * f;
   out = r;
 }
-double dotOf(const Vec3d& a, const Vec3d& b) { return a.dot(b); }
+template <int N>
+double dotOf(const Vec<N>& a, const Vec<N>& b) {
+  return a.dot(b);
+}
 double dotOf(const RigidDeriv3& a, const RigidDeriv3& b) {
   return a.linear.dot(b.linear) + a.angular.dot(b.angular);
 }
-void toNumbers(const Vec3d& d, double* out) { std::copy(d.data(), d.data() + 3, out); }
+template <int N>
+void toNumbers(const Vec<N>& d, double* out) {
+  std::copy(d.data(), d.data() + N, out);
+}
 void toNumbers(const RigidDeriv3& d, double* out) {
   std::copy(d.linear.data(), d.linear.data() + 3, out);
   std::copy(d.angular.data(), d.angular.data() + 3, out + 3);
 }
-void fromNumbers(const double* in, Vec3d& d) { d = Vec3d(in[0], in[1], in[2]); }
+template <int N>
+void fromNumbers(const double* in, Vec<N>& d) {
+  d = Eigen::Map<const Vec<N>>(in);
+}
 void fromNumbers(const double* in, RigidDeriv3& d) {
   d.linear = Vec3d(in[0], in[1], in[2]);
   d.angular = Vec3d(in[3], in[4], in[5]);
@@ -320,6 +354,8 @@ void MechanicalObject<DataTypes>::copyFromGlobal(VecId v, const Eigen::Ref<const
     fromNumbers(g.data() + offset + i * DataTypes::derivSize, d[i]);
 }
 
+template class MechanicalObject<Vec1Types>;
+template class MechanicalObject<Vec2Types>;
 template class MechanicalObject<Vec3Types>;
 template class MechanicalObject<Rigid3Types>;
 

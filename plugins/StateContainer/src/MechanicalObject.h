@@ -9,7 +9,10 @@
 
 namespace stroma {
 
-/// The state vectors of a set of points (Vec3d) or rigid frames (Rigid3d), SOFA's attributes.
+/// The state vectors of a set of points (Vec3d; Vec2d and Vec1d in a plane or on a line) or rigid
+/// frames (Rigid3d), SOFA's attributes. The initial transform (translation, rotation, scale) is
+/// applied in 3D to points of fewer coordinates, the missing ones 0, which then keep their
+/// first 1 or 2 coordinates, as in SOFA.
 template <class DataTypes>
 class MechanicalObject final : public MechanicalState<DataTypes> {
  public:

@@ -8,6 +8,8 @@ void registerComponents(stroma::PluginRegistry& registry) {
   using namespace stroma;
   registry.add("MechanicalObject", "Positions, velocities and forces of a set of points or frames")
       .with<MechanicalObject<Vec3Types>>("Vec3d")
+      .with<MechanicalObject<Vec2Types>>("Vec2d")
+      .with<MechanicalObject<Vec1Types>>("Vec1d")
       .with<MechanicalObject<Rigid3Types>>("Rigid3d");
 }
 
