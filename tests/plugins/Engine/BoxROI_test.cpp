@@ -162,5 +162,40 @@ TEST(BoxROI, BadInputIsReported) {
             "orientedBox");
 }
 
+TEST(BoxROI, PointsInAPlaneOrOnALineHaveTheirMissingCoordinatesZero) {
+  // The BoxROI takes its template (Vec2d, Vec1d) from the node's state; a box selects the
+  // points in the plane z = 0 (on the line y = z = 0) only when it contains that plane (line).
+  SceneHolder s;
+  ASSERT_TRUE(s.load(R"(
+<Node name="root" gravity="0 0 0">
+  <Node name="plane">
+    <RegularGridTopology name="grid" n="4 3 1" min="0 0 0" max="3 2 0"/>
+    <MechanicalObject template="Vec2" name="dofs"/>
+    <BoxROI name="inside" box="0.5 -0.1 -0.1  2.5 1.1 0.1"/>
+    <BoxROI name="above" box="0.5 -0.1 0.5  2.5 1.1 1"/>
+  </Node>
+  <Node name="line">
+    <RegularGridTopology name="grid" nx="5" ny="1" nz="1" xmin="0" xmax="4" ymin="0" ymax="0"
+                         zmin="0" zmax="0"/>
+    <MechanicalObject template="Vec1" name="dofs"/>
+    <BoxROI name="inside" box="0.5 -1 -1  2.5 1 1"/>
+    <BoxROI name="beside" box="0.5 0.5 -1  2.5 1 1"/>
+  </Node>
+</Node>)"));
+  EXPECT_EQ(s.get<Base>("@plane/inside")->templateName(), "Vec2d");
+  EXPECT_EQ(s.text("@plane/inside.position"), "0 0 1 0 2 0 3 0 0 1 1 1 2 1 3 1 0 2 1 2 2 2 3 2");
+  EXPECT_EQ(s.text("@plane/inside.indices"), "1 2 5 6");
+  EXPECT_EQ(s.text("@plane/inside.pointsInROI"), "1 0 2 0 1 1 2 1");
+  EXPECT_EQ(s.text("@plane/inside.quadIndices"), "1");
+  EXPECT_EQ(s.text("@plane/above.indices"), "");
+
+  EXPECT_EQ(s.get<Base>("@line/inside")->templateName(), "Vec1d");
+  EXPECT_EQ(s.text("@line/inside.position"), "0 1 2 3 4");
+  EXPECT_EQ(s.text("@line/inside.indices"), "1 2");
+  EXPECT_EQ(s.text("@line/inside.pointsOutROI"), "0 3 4");
+  EXPECT_EQ(s.text("@line/inside.edgeIndices"), "1");
+  EXPECT_EQ(s.text("@line/beside.indices"), "");
+}
+
 }  // namespace
 }  // namespace stroma::test

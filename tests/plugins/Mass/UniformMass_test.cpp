@@ -161,5 +161,32 @@ TEST(UniformMass, MassChangedWhileRunningActsAtTheNextStep) {
   EXPECT_DOUBLE_EQ(assembledMass(s.scene())(0, 0), 9);
 }
 
+TEST(UniformMass, PointsInAPlaneOrOnALineTakeTheFirstComponentsOfGravity) {
+  // As SOFA: a Vec2d state feels (gx, gy), a Vec1d state gx.
+  SceneHolder s;
+  ASSERT_TRUE(s.load(R"(
+<Node name="root" gravity="1 -2 3">
+  <Node name="plane">
+    <MechanicalObject template="Vec2" name="dofs" position="0 0  1 1"/>
+    <UniformMass vertexMass="0.5"/>
+  </Node>
+  <Node name="line">
+    <MechanicalObject template="Vec1" name="dofs" position="0 2 5"/>
+    <UniformMass totalMass="3"/>
+  </Node>
+</Node>)"));
+  MechanicalOperations mop(s.root(), s.scene().timing());
+  mop.computeForce(MechanicalParams{}, VecId::force());
+  EXPECT_EQ(s.text("@plane/dofs.force"), "0.5 -1 0.5 -1");
+  EXPECT_EQ(s.text("@line/dofs.force"), "1 1 1");
+  // E = -sum m g.x: plane -0.5 (1 - 2), line -1 (0 + 2 + 5).
+  EXPECT_DOUBLE_EQ(mop.potentialEnergy(MechanicalParams{}), 0.5 - 7);
+  const Eigen::MatrixXd M = assembledMass(s.scene());
+  ASSERT_EQ(M.rows(), 2 * 2 + 3);
+  EXPECT_TRUE(M.isDiagonal());
+  EXPECT_DOUBLE_EQ(M.trace(), 4 * 0.5 + 3 * 1.0);
+  EXPECT_TRUE(M.isApprox(appliedMass(s.scene())));
+}
+
 }  // namespace
 }  // namespace stroma::test
