@@ -188,7 +188,8 @@ TEST_P(TensorMassBadInput, IsAnErrorNamingTheComponentAndField) {
     mesh.points.push_back(Vec3d(2, 2, 1));
     mesh.tetrahedra.push_back({n, n + 1, n + 2, n + 3});
   }
-  for (const char* component : {"TetrahedralTensorMassForceField"}) {
+  for (const char* component :
+       {"TetrahedralTensorMassForceField", "TetrahedralStVKTensorMassForceField"}) {
     SCOPED_TRACE(component);
     Runtime runtime;
     Scene scene(runtime);
