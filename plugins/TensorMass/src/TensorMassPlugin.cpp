@@ -2,6 +2,7 @@
 #include "StandardTetrahedralFEMForceField.h"
 #include "TetrahedralStVKTensorMassForceField.h"
 #include "TetrahedralTensorMassForceField.h"
+#include "TetrahedralVolumePenaltyForceField.h"
 #include "core/Plugin.h"
 
 namespace {
@@ -20,6 +21,10 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .add("StandardTetrahedralFEMForceField",
            "Hyperelastic tetrahedra element by element (St Venant-Kirchhoff, neo-Hookean)")
       .with<StandardTetrahedralFEMForceField>("Vec3d");
+  registry
+      .add("TetrahedralVolumePenaltyForceField",
+           "Incompressibility penalty on the volume of each tetrahedron (Picinbono 2003)")
+      .with<TetrahedralVolumePenaltyForceField>("Vec3d");
 }
 
 }  // namespace
