@@ -9,10 +9,17 @@ template <class DataTypes>
 void FixedProjectiveConstraint<DataTypes>::init() {
   ProjectiveConstraint<DataTypes>::init();
   if (!this->mstate()) return;
-  reportIndicesOutOfRange(*this, d_indices.value(), this->mstate()->size(), "indices",
-                          "points of " + this->mstate()->path());
+  checkIndices();
   if (!d_fixAll.value() && d_indices.value().empty())
     this->msgWarning("no index given: nothing is fixed", "indices");
+}
+
+template <class DataTypes>
+void FixedProjectiveConstraint<DataTypes>::checkIndices() {
+  if (!this->mstate() || d_indices.version() == m_checkedIndices) return;
+  m_checkedIndices = d_indices.version();
+  reportIndicesOutOfRange(*this, d_indices.value(), this->mstate()->size(), "indices",
+                          "points of " + this->mstate()->path());
 }
 
 template <class DataTypes>
@@ -23,7 +30,7 @@ void FixedProjectiveConstraint<DataTypes>::forEachFixed(std::size_t n, F&& f) co
     return;
   }
   for (unsigned i : d_indices.value())
-    if (i < n) f(i);  // out-of-range indices were reported at init
+    if (i < n) f(i);  // out-of-range indices are reported by checkIndices
 }
 
 template <class DataTypes>
@@ -33,6 +40,7 @@ void FixedProjectiveConstraint<DataTypes>::projectResponse(VecDeriv& dx) {
 
 template <class DataTypes>
 void FixedProjectiveConstraint<DataTypes>::projectVelocity(VecDeriv& v, double) {
+  checkIndices();  // every step starts with this projection
   forEachFixed(v.size(), [&](std::size_t i) { v[i] = DataTypes::zeroDeriv(); });
 }
 

@@ -35,6 +35,10 @@ class FixedProjectiveConstraint final : public ProjectiveConstraint<DataTypes> {
  private:
   template <class F>
   void forEachFixed(std::size_t n, F&& f) const;
+  /// Reports indices out of range once per new value of `indices` (they may change while
+  /// the simulation runs); the projections skip them.
+  void checkIndices();
+  std::uint64_t m_checkedIndices = 0;
 };
 
 }  // namespace stroma
