@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Install test: installs the main build into a fresh prefix, builds the out-of-tree plugin of
-# external_plugin/ against it with find_package(Stroma), then checks that the INSTALLED stroma
+# Install test: installs the main build into a fresh prefix, builds the out-of-tree plugins of
+# external_plugin/ and examples/ForceFieldPlugin against it with find_package(Stroma), then
+# checks that the INSTALLED stroma
 # lists and runs the plugin's component (found through STROMA_PLUGIN_PATH) and finds its own
-# built-in plugins and libraries in the install prefix, not in the build tree.
+# built-in plugins and libraries in the install prefix, not in the build tree, and that the
+# example force field reaches its analytic static equilibrium.
 #
 # Usage: install_test.sh MAIN_BUILD_DIR WORK_DIR   (ctest passes both; WORK_DIR is wiped)
 set -euo pipefail
@@ -107,4 +109,29 @@ if grep -q "file=$build_dir/lib/" "$work/doc_builtin.log"; then
 fi
 expect check_default 0 "$stroma" check "$prefix/share/stroma/scenes/organ/Organ.scn"
 
-echo "install_test: OK (prefix $prefix, plugin $plugins)"
+# 7. The example third-party force field (examples/ForceFieldPlugin), built the same way, gives
+# the static equilibrium of its scene: u + 2 u^3 = F, u = 1 m for 3 N and u = 2 m for 18 N.
+example=$(cd "$here/../../examples/ForceFieldPlugin" && pwd)
+expect configure_example 0 "$cmake" -S "$example" -B "$work/example" "${generator[@]}" \
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" "${launcher[@]}"
+expect build_example 0 "$cmake" --build "$work/example"
+expect run_example 0 env STROMA_PLUGIN_PATH="$work/example/plugins" "$stroma" run \
+  "$example/HardeningAnchor.scn" -n 1 --export-state "$work/example.state"
+awk '
+  $1 == "state" && $2 == "/root/Points/dofs" { row = 0; reading = 1; next }
+  reading && row < 2 { x[row] = $1; y[row] = $2; z[row] = $3; ++row }
+  function off(a, b) { d = a - b; return (d < 0 ? -d : d) > 1e-9 }
+  END {
+    if (row != 2) { print "no state of /root/Points/dofs"; exit 1 }
+    if (off(x[0], 1) || off(y[0], 0) || off(z[0], 0) || off(x[1], 5) || off(y[1], 2) || off(z[1], 0)) {
+      printf "equilibrium (%s %s %s) (%s %s %s), expected (1 0 0) (5 2 0)\n", x[0], y[0], z[0], x[1], y[1], z[1]
+      exit 1
+    }
+  }' "$work/example.state" >"$work/example_check.log" 2>&1 ||
+  fail "HardeningAnchor.scn: $(cat "$work/example_check.log")"
+sed 's/hardening="2"/hardening="-2"/' "$example/HardeningAnchor.scn" >"$work/bad_example.scn"
+expect check_bad_example 2 env STROMA_PLUGIN_PATH="$work/example/plugins" "$stroma" check \
+  "$work/bad_example.scn"
+expect_output check_bad_example "HardeningAnchorForceField.*hardening|hardening.*HardeningAnchorForceField"
+
+echo "install_test: OK (prefix $prefix, plugins $plugins and $work/example/plugins)"
