@@ -33,6 +33,7 @@ class SolveVisitor final : public Visitor {
     for (OdeSolver* solver : node.getAll<OdeSolver>()) {
       if (!solver->isValid()) continue;
       MechanicalOperations mop(node, m_timing, m_dt);
+      if (!mop.hasState()) solver->reportNoState();
       // Constraints hold from the start of the step: a point fixed since the last step (its
       // indices changed) starts it at rest instead of drifting one step on its old velocity.
       mop.projectVelocity(VecId::velocity());

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/Base.h"
+#include "core/Node.h"
 #include "simulation/VecId.h"
 
 namespace stroma {
@@ -13,6 +14,19 @@ class MechanicalOperations;
 class OdeSolver : public Base {
  public:
   virtual void solve(MechanicalOperations& mop, double dt) = 0;
+
+  /// Called by the animation loop when the solver's node has no mechanical state at or below
+  /// it: warns once, since such a solver integrates nothing (a misplaced solver or state).
+  void reportNoState() {
+    if (m_reportedNoState) return;
+    m_reportedNoState = true;
+    msgWarning("no mechanical state in " + (node() ? node()->path() : std::string("its node")) +
+               " or below: this solver integrates nothing (put it in the node of the "
+               "MechanicalObject it should move, or above it)");
+  }
+
+ private:
+  bool m_reportedNoState = false;
 };
 
 /// Outcome of a linear solve, reported to the log by the solver and returned to the caller.

@@ -73,6 +73,27 @@ TEST(ImplicitSolvers, NeedALinearSolver) {
   }
 }
 
+TEST(EverySolverKind, WithoutAStateWarnsOnceThatItIntegratesNothing) {
+  for (const std::string solvers :
+       {"<EulerExplicitSolver/>", "<EulerImplicitSolver/><CGLinearSolver/>",
+        "<StaticSolver/><SparseLDLSolver/>", "<RungeKutta4Solver/>"}) {
+    SCOPED_TRACE(solvers);
+    // The solver sits in a sibling of the body's node: nothing at or below it moves.
+    SolverScene s(R"(<Node name="root" dt="0.01"><Node name="Solvers">)" + solvers +
+                  R"(</Node><Node name="Body"><MechanicalObject position="0 0 0"/>
+                  <UniformMass vertexMass="1"/></Node></Node>)");
+    ASSERT_TRUE(s.loaded()) << s.log();
+    for (int n = 0; n < 3; ++n) ASSERT_TRUE(s.step()) << s.log();
+    ASSERT_EQ(s.scene().log().count(MessageLevel::warning), 1u) << s.log();
+    for (const Message& m : s.scene().log().messages())
+      if (m.level == MessageLevel::warning) {
+        EXPECT_EQ(m.componentPath.rfind("/root/Solvers/", 0), 0u) << m.componentPath;
+        EXPECT_NE(m.text.find("no mechanical state in /root/Solvers or below"), std::string::npos)
+            << m.text;
+      }
+  }
+}
+
 // `stroma run` on a scene that overflows at the first step, and on one with dt = 0.
 int runCli(const std::string& xml, std::string& output) {
   TempDir dir;
