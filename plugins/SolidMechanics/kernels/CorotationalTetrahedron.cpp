@@ -2,6 +2,7 @@
 #include "SolidMechanics/kernels/CorotationalTetrahedron.h"
 
 #include <Eigen/LU>
+#include <cmath>
 
 #include "SolidMechanics/kernels/LinearTetrahedron.h"
 
@@ -48,6 +49,14 @@ Eigen::Matrix3d computeRotation(RotationMethod method, const CorotationalTetrahe
       return computeSvdRotation(computeDeformationGradient(element, x));
   }
   return Eigen::Matrix3d::Identity();
+}
+
+TetrahedronRows computeStiffnessFactor(const CorotationalTetrahedron& element, double scale) {
+  // grad N_j (j = 1..3) are the rows of Dm^-1; grad N_0 = -(their sum).
+  TetrahedronVectors G;
+  G.rightCols<3>() = element.restEdgesInverse.transpose();
+  G.col(0) = -G.rightCols<3>().rowwise().sum();
+  return toRows(std::sqrt(scale * std::abs(element.restVolume)) * G);
 }
 
 }  // namespace stroma::fem

@@ -10,6 +10,7 @@
 #include "FemTestUtilities.h"
 #include "SolidMechanics/kernels/CorotationalHexahedron.h"
 #include "SolidMechanics/kernels/CorotationalTetrahedron.h"
+#include "SolidMechanics/kernels/IsotropicMaterial.h"
 #include "SolidMechanics/kernels/LinearTetrahedron.h"
 #include "SolidMechanics/kernels/TrilinearHexahedron.h"
 
@@ -198,6 +199,28 @@ TYPED_TEST(CorotationalElementTest, InvertedElementGetsRotationAndRestoringForce
     for (int step = 0; step < 3000; ++step) x += (0.5 / largest) * this->force(m, x);
     EXPECT_NEAR(TypeParam::volume(x), restVolume, 1e-3 * restVolume) << rotationMethodName(m);
   }
+}
+
+// The factored form used by the matrix-free products (multiplyFactoredStiffness) is Ke.
+TEST(CorotationalTetrahedron, FactoredStiffnessIsTheElementStiffness) {
+  const double E = 3e4, nu = 0.45;
+  const Matrix6d C = computeElasticityMatrix(computeLameParameters(E, nu));
+  const Matrix6d unitC = computeElasticityMatrix(computeLameParameters(1.0, nu));
+  CorotationalTetrahedron element;
+  ASSERT_EQ(computeCorotationalTetrahedron(test::irregularTetrahedron(), C, element),
+            ElementStatus::ok);
+  const TetrahedronRows G = computeStiffnessFactor(element, E);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  for (int trial = 0; trial < 10; ++trial) {
+    const TetrahedronVectors v = TetrahedronVectors::NullaryExpr([&] { return uniform(random); });
+    TetrahedronVectors expected;
+    Eigen::Map<ElementVector<4>>(expected.data()) = element.stiffness * asElementVector<4>(v);
+    const TetrahedronVectors product = fromRows(multiplyFactoredStiffness(G, unitC, toRows(v)));
+    EXPECT_LT((product - expected).norm(), 1e-14 * element.stiffness.norm() * v.norm());
+  }
+  // An element without stiffness (scale 0) has a zero factor.
+  EXPECT_EQ(fromRows(computeStiffnessFactor(element, 0.0)), TetrahedronVectors::Zero());
 }
 
 }  // namespace
