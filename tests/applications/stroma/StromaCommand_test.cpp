@@ -526,7 +526,7 @@ TEST(StromaCommand, ListShowsPluginsAndTheirComponents) {
   const CommandResult r = runStroma({"list"});
   EXPECT_EQ(r.exitCode, 0) << show(r);
   for (const char* part :
-       {"StateContainer\n", "  MechanicalObject<Vec3d,Rigid3d>: ", "SceneBasics\n",
+       {"StateContainer\n", "  MechanicalObject<Vec3d,Vec2d,Vec1d,Rigid3d>: ", "SceneBasics\n",
         "  RequiredPlugin: ", "Visual\n", "  OglModel", "StromaTestPlugin\n",
         "  TestCounter (also LegacyTestCounter): Counts its steps (test)\n",
         "  TestTemplated<Vec3d,Rigid3d>: "})
@@ -548,9 +548,9 @@ TEST(StromaCommand, DocListsFieldsWithTypeDefaultAndUnit) {
   const CommandResult r = runStroma({"doc", "MechanicalObject"});
   EXPECT_EQ(r.exitCode, 0) << show(r);
   for (const char* part :
-       {"MechanicalObject <Vec3d>\n", "plugin: StateContainer\n", "templates: Vec3d Rigid3d",
-        "Fields:\n", "  position  (list of Vec3d, unit m)\n",
-        "  velocity  (list of Vec3d, unit m/s)\n",
+       {"MechanicalObject <Vec3d>\n", "plugin: StateContainer\n",
+        "templates: Vec3d Vec2d Vec1d Rigid3d", "Fields:\n",
+        "  position  (list of Vec3d, unit m)\n", "  velocity  (list of Vec3d, unit m/s)\n",
         "  translation  (Vec3d, unit m)\n      Translation applied to the initial positions.\n"
         "      default: 0 0 0\n",
         "  rotation  (Vec3d, unit deg)\n", "  size  (int, range [0, ", "  name  (string)\n"})
