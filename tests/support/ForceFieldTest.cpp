@@ -84,6 +84,13 @@ class Harness {
       }
     std::size_t offset = 0;
     for (BaseMechanicalState* s : independent) {
+      if (m_options.rotationInvariant && !dynamic_cast<MechanicalState<Vec3Types>*>(s) &&
+          !dynamic_cast<MechanicalState<Rigid3Types>*>(s)) {
+        m_report.failure = s->path() + " is a " + s->templateName() +
+                           " state: the rigid-motion checks (rotationInvariant) move Vec3d and "
+                           "Rigid3d states only";
+        return false;
+      }
       m_offsets.set(s, offset);
       offset += s->matrixSize();
       const auto dim = static_cast<std::size_t>(s->derivDimension());
@@ -361,6 +368,13 @@ class Harness {
         [&](std::vector<RigidCoord3>& x) {
           for (const RigidCoord3& c : x) add(c.center);
         });
+    // Points in a plane or on a line, their missing coordinates 0.
+    for (BaseMechanicalState* s : m_mop.independentStates()) {
+      if (auto* v = dynamic_cast<MechanicalState<Vec2Types>*>(s))
+        for (const Vec2d& p : v->readCoord(VecId::restPosition())) add(Vec3d(p.x(), p.y(), 0));
+      if (auto* v = dynamic_cast<MechanicalState<Vec1Types>*>(s))
+        for (const Vec1d& p : v->readCoord(VecId::restPosition())) add(Vec3d(p.x(), 0, 0));
+    }
     if (count < 2 || box.diagonal().norm() == 0) return 1.0;
     return box.diagonal().norm() / std::cbrt(static_cast<double>(count));
   }

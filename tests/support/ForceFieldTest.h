@@ -52,7 +52,8 @@ struct ForceFieldTestOptions {
   bool conservative = true;
   /// (d) The force vanishes at the rest shape.
   bool zeroAtRest = true;
-  /// (e) The force vanishes under rigid motions of the rest shape, and conserves momentum.
+  /// (e) The force vanishes under rigid motions of the rest shape, and conserves momentum
+  /// (Vec3d and Rigid3d states only: a scene with other states is then a failure).
   bool rotationInvariant = false;
   /// Random displacement of the positions, relative to the typical spacing of the points
   /// (radians for the orientations of rigid frames).

@@ -85,11 +85,17 @@ const char* kPlaneGrid = R"(<Node name="root" gravity="0 0 0">
 
 TEST(LowDimensionSprings, MeshSpringsInAPlanePassTheForceFieldTest) {
   // The rigid-motion check of the shared test moves Vec3d and Rigid3d states only: the in-plane
-  // rigid motions are checked below. The grid's spacing is 1, the helper's length scale.
+  // rigid motions are checked below.
   const auto report = checkForceField(kPlaneGrid);
   EXPECT_EQ(report.dofs, 12u * 2);
   EXPECT_GT(report.forceNorm, 0) << report.describe();
   EXPECT_GE(report.dampingError, 0) << report.describe();
+}
+
+TEST(LowDimensionSprings, TheSharedRigidMotionCheckRefusesPlanarStates) {
+  // It would move nothing, and pass without checking anything.
+  const auto report = measureForceField(kPlaneGrid, {.rotationInvariant = true});
+  EXPECT_NE(report.failure.find("is a Vec2d state"), std::string::npos) << report.failure;
 }
 
 TEST(LowDimensionSprings, MeshSpringsOnALinePassTheForceFieldTest) {
