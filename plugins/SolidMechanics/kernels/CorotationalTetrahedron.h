@@ -102,6 +102,28 @@ EIGEN_ALWAYS_INLINE TetrahedronRows rotateRows(const Eigen::Matrix3d& M, const T
   return r;
 }
 
+/// Elastic force f = -R Ke (R^T x - X) (N) with Ke factored (multiplyFactoredStiffness), by
+/// rows; u is taken relative to node 0 as in computeCorotatedDisplacement.
+EIGEN_ALWAYS_INLINE TetrahedronRows computeFactoredForce(const TetrahedronRows& G,
+                                                         const Matrix6d& C,
+                                                         const Eigen::Matrix3d& R,
+                                                         const TetrahedronRows& x,
+                                                         const TetrahedronRows& X) {
+  TetrahedronRows relative;
+  for (int a = 0; a < 3; ++a) relative[a] = x[a] - x[a][0];
+  TetrahedronRows u = rotateRows(R.transpose(), relative);
+  for (int a = 0; a < 3; ++a) u[a] -= X[a] - X[a][0];
+  return rotateRows(-R, multiplyFactoredStiffness(G, C, u));
+}
+
+/// Force differential df = -R Ke R^T dx (N) with Ke factored, by rows.
+EIGEN_ALWAYS_INLINE TetrahedronRows computeFactoredDForce(const TetrahedronRows& G,
+                                                          const Matrix6d& C,
+                                                          const Eigen::Matrix3d& R,
+                                                          const TetrahedronRows& dx) {
+  return rotateRows(-R, multiplyFactoredStiffness(G, C, rotateRows(R.transpose(), dx)));
+}
+
 /// The factor G of computeTetrahedronStiffness's Ke = B(G)^T (C / scale) B(G) (see
 /// multiplyFactoredStiffness): the rest shape-function gradients times sqrt(scale |V|), or zero
 /// for an element without stiffness. Components with one Poisson ratio and a Young modulus per

@@ -174,9 +174,9 @@ class CorotationalElements {
       const Eigen::Matrix3d R = fem::computeRotation(method, m_constants[e], xe);
       m_rotations[e] = R;
       if constexpr (N == 4)
-        corner = -R * fem::fromRows(fem::multiplyFactoredStiffness(
-                          m_stiffnessFactors[e], m_unitElasticity,
-                          fem::toRows(fem::computeCorotatedDisplacement(m_constants[e], R, xe))));
+        storeRows(corner, fem::computeFactoredForce(m_stiffnessFactors[e], m_unitElasticity, R,
+                                                    fem::toRows(xe),
+                                                    fem::toRows(m_constants[e].restPositions)));
       else
         corner = fem::computeForce(m_constants[e], R, xe);
     });
@@ -187,14 +187,9 @@ class CorotationalElements {
   void addDForce(std::span<const Vec3d> dx, std::span<Vec3d> df, double kFactor,
                  const ThreadPool& pool) {
     if constexpr (N == 4) {
-      // By rows of 4 nodes (one SIMD register each): local dx = R^T dx, df = -R Ke (local dx).
       forEachElement(pool, kProductGrain, [&](std::size_t e, Eigen::Map<Vectors> corner) {
-        const Eigen::Matrix3d& R = m_rotations[e];
-        const fem::TetrahedronRows localDf =
-            fem::multiplyFactoredStiffness(m_stiffnessFactors[e], m_unitElasticity,
-                                           fem::rotateRows(R.transpose(), gatherRows(dx, e)));
-        const fem::TetrahedronRows df = fem::rotateRows(-R, localDf);
-        for (int i = 0; i < 4; ++i) corner.col(i) = Vec3d(df[0][i], df[1][i], df[2][i]);
+        storeRows(corner, fem::computeFactoredDForce(m_stiffnessFactors[e], m_unitElasticity,
+                                                     m_rotations[e], gatherRows(dx, e)));
       });
     } else {
       forEachElement(pool, kProductGrain, [&](std::size_t e, Eigen::Map<Vectors> corner) {
@@ -275,6 +270,10 @@ class CorotationalElements {
     return {Eigen::Array4d(p0.x(), p1.x(), p2.x(), p3.x()),
             Eigen::Array4d(p0.y(), p1.y(), p2.y(), p3.y()),
             Eigen::Array4d(p0.z(), p1.z(), p2.z(), p3.z())};
+  }
+
+  static void storeRows(Eigen::Map<Vectors> corner, const fem::TetrahedronRows& rows) {
+    for (int i = 0; i < 4; ++i) corner.col(i) = Vec3d(rows[0][i], rows[1][i], rows[2][i]);
   }
 
   template <class PerElement>
