@@ -68,7 +68,7 @@ void SpringForceField<DataTypes>::init() {
     m_state1 = resolveState(l_object1);
     m_state2 = resolveState(l_object2);
   } else {
-    m_state1 = m_state2 = node() ? node()->get<State>() : nullptr;
+    m_state1 = m_state2 = node() ? node()->template get<State>() : nullptr;
     if (!m_state1)
       msgError(std::string("no ") + DataTypes::name + " mechanical state in " +
                    (node() ? node()->path() : std::string("?")) +
