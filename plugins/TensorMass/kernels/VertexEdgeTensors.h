@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Stiffness tensors stored on the vertices and the edges of a mesh (Cotin, Delingette, Ayache;
-// Picinbono's thesis chapter, seed 000, eqs. 1.11 and 1.12): a symmetric 3N x 3N matrix whose
+// Checoury's report, seed 000, eqs. 1.11 and 1.12): a symmetric 3N x 3N matrix whose
 // diagonal blocks K^pp live on the vertices and whose off-diagonal blocks K^pj live on the
 // edges (p, j), K^jp = (K^pj)^T. The linear tensor-mass stiffness, and the tangent stiffness
 // of the St Venant-Kirchhoff one, are such matrices: every pair of vertices that interact

@@ -58,7 +58,9 @@ class StandardTetrahedralFEMForceField final : public ForceField<Vec3Types> {
       "ParameterSet",
       {},
       "Material parameters as SOFA writes them: \"mu lambda\" (Pa) for StVenantKirchhoff and "
-      "NeoHookean. Empty: from youngModulus and poissonRatio.",
+      "NeoHookean (SOFA's NeoHookean reads \"mu k\", k a bulk modulus with another "
+      "volumetric term: here the second number is lambda). Empty: from youngModulus and "
+      "poissonRatio.",
       {.unit = "Pa"}};
   Data<double> d_youngModulus{this,
                               "youngModulus",

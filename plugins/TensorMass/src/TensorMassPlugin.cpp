@@ -15,7 +15,8 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .with<TetrahedralTensorMassForceField>("Vec3d");
   registry
       .add("TetrahedralStVKTensorMassForceField",
-           "St Venant-Kirchhoff elasticity on tetrahedra, tensor-mass form (Picinbono 2003)")
+           "St Venant-Kirchhoff elasticity on tetrahedra, tensor-mass form (Picinbono, Delingette, "
+           "Ayache)")
       .with<TetrahedralStVKTensorMassForceField>("Vec3d");
   registry
       .add("StandardTetrahedralFEMForceField",
@@ -23,7 +24,8 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .with<StandardTetrahedralFEMForceField>("Vec3d");
   registry
       .add("TetrahedralVolumePenaltyForceField",
-           "Incompressibility penalty on the volume of each tetrahedron (Picinbono 2003)")
+           "Incompressibility penalty on the volume of each tetrahedron (Picinbono, Delingette, "
+           "Ayache)")
       .with<TetrahedralVolumePenaltyForceField>("Vec3d");
 }
 
