@@ -178,6 +178,68 @@ const AdjacencyList& Topology::edgesAroundVertex() const {
                 [&] { return computeElementsAroundVertex<2>(edges, n); });
 }
 
+// --- Run-time changes ---------------------------------------------------------------------------
+
+bool Topology::removeTetrahedra(std::span<const Index> indices, std::string& error) {
+  {
+    // Earlier changes made another way get their own revision first.
+    std::lock_guard lock(m_mutex);
+    refresh();
+  }
+  // This topology owns its lists from now on (a list that followed a loader stops following).
+  auto own = [](auto& data) {
+    data.value();
+    std::string ignored;
+    data.setParent(nullptr, ignored);
+  };
+  std::vector<Tetrahedron> tetrahedra = d_tetrahedra.value();
+  std::vector<Triangle> triangles = d_triangles.value();
+  std::vector<Edge> edges = d_edges.value();
+  TopologyChange change;
+  if (!removeTetrahedraFromLists(tetrahedra, triangles, edges, indices, change, error)) return false;
+  if (change.tetrahedra.empty()) return true;
+  own(d_tetrahedra);
+  d_tetrahedra.setValue(std::move(tetrahedra));
+  if (!change.triangles.empty()) {
+    own(d_triangles);
+    d_triangles.setValue(std::move(triangles));
+  }
+  if (!change.edges.empty()) {
+    own(d_edges);
+    d_edges.setValue(std::move(edges));
+  }
+  {
+    std::lock_guard lock(m_mutex);
+    refresh();
+    change.revision = m_cache->revision;
+  }
+  if (!change.freedPoints.empty() && !m_reportedFreedPoints) {
+    m_reportedFreedPoints = true;
+    msgWarning(std::to_string(change.freedPoints.size()) +
+                   " points belong to no tetrahedron anymore (the first is point " +
+                   std::to_string(change.freedPoints.front()) +
+                   "): they are free, with no stiffness (and no mass from the elements); points "
+                   "freed later are not reported",
+               "tetrahedra");
+  }
+  if (m_changes.size() == kChangeLogCapacity) m_changes.erase(m_changes.begin());
+  m_changes.push_back(std::move(change));
+  return true;
+}
+
+std::optional<std::span<const TopologyChange>> Topology::changesSince(std::uint64_t since) const {
+  const std::uint64_t now = revision();
+  if (since > now) return std::nullopt;
+  if (since == now) return std::span<const TopologyChange>();
+  // The log must hold exactly the revisions since+1 .. now.
+  const std::size_t count = static_cast<std::size_t>(now - since);
+  if (count > m_changes.size()) return std::nullopt;
+  const std::size_t first = m_changes.size() - count;
+  for (std::size_t k = 0; k < count; ++k)
+    if (m_changes[first + k].revision != since + 1 + k) return std::nullopt;
+  return std::span<const TopologyChange>(m_changes.data() + first, count);
+}
+
 // --- Checks -----------------------------------------------------------------------------------
 
 namespace {

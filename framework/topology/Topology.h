@@ -16,11 +16,15 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "core/Base.h"
 #include "core/Types.h"
 #include "topology/MeshAdjacency.h"
+#include "topology/TopologyChange.h"
 #include "topology/TopologyTypes.h"
 
 namespace stroma {
@@ -73,6 +77,23 @@ class Topology : public Base {
   /// that keeps something derived from the elements compares it with the value it saw.
   std::uint64_t revision() const;
 
+  // --- Run-time changes (cutting): TopologyChange.h -------------------------------------------
+
+  /// Removes the tetrahedra `indices` (any order, duplicates count once), and the triangles and
+  /// edges this topology lists that no remaining tetrahedron uses; points are kept. Elements
+  /// are renumbered as SOFA does (the last one moves into each removed slot, TopologyChange.h).
+  /// The change is logged under the new revision(). A point left without tetrahedra is free:
+  /// the first time that happens a warning says so. Returns false, changing nothing, when an
+  /// index is not a tetrahedron's; `error` then says which (for the caller to report).
+  bool removeTetrahedra(std::span<const Index> indices, std::string& error);
+
+  /// The changes from revision `since` to revision(), oldest first, when every one of them is
+  /// logged; std::nullopt when not (the elements were set another way, or the log, which keeps
+  /// the last kChangeLogCapacity changes, was trimmed): the caller then rebuilds from the
+  /// element lists. The span is valid until the next change.
+  std::optional<std::span<const TopologyChange>> changesSince(std::uint64_t since) const;
+  static constexpr std::size_t kChangeLogCapacity = 64;
+
   // --- Adjacency, computed on first use and cached until the elements change -----------------
   // The references stay valid until an element list changes. Safe to call from several
   // threads while the elements do not change.
@@ -111,6 +132,8 @@ class Topology : public Base {
 
   mutable std::mutex m_mutex;
   mutable std::unique_ptr<Cache> m_cache;
+  std::vector<TopologyChange> m_changes;  ///< the last changes, oldest first
+  bool m_reportedFreedPoints = false;
 };
 
 }  // namespace stroma
