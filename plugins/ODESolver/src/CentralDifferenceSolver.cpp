@@ -14,6 +14,7 @@ void CentralDifferenceSolver::solve(MechanicalOperations& mop, double dt) {
   MechanicalParams mp;
   mp.dt = h;
   mop.computeForce(mp, f);
+  m_stability.check(mop, h);
   const VecId a = mop.allocDeriv();
   if (!mop.accFromF(a, f)) return;
   mop.projectResponse(a);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "StabilityBound.h"
 #include "simulation/Solvers.h"
 
 namespace stroma {
@@ -14,7 +15,8 @@ namespace stroma {
 ///   x_{n+1}   = x_n + h v_{n+1/2}.
 /// The stored velocity is v_{n+1/2}; the initial one is taken as v_{-1/2}. Needs lumped masses.
 /// Undamped, it keeps the energy of a linear system bounded for h < 2 / omega_max (Courant);
-/// beyond, the run diverges and stops at the first non-finite value.
+/// beyond, the run diverges and stops at the first non-finite value. The bound is estimated
+/// at the first step (output `criticalTimeStep`) and a larger dt is warned about.
 class CentralDifferenceSolver final : public OdeSolver {
  public:
   Data<double> d_rayleighMass{this,
@@ -29,6 +31,9 @@ class CentralDifferenceSolver final : public OdeSolver {
 
  private:
   long long m_step = 0;
+
+ public:
+  ExplicitStabilityCheck m_stability{*this, 2.0, "central differences"};
 };
 
 }  // namespace stroma

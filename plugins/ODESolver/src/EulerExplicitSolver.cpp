@@ -21,6 +21,7 @@ void EulerExplicitSolver::solve(MechanicalOperations& mop, double dt) {
   MechanicalParams mp;
   mp.dt = dt;
   mop.computeForce(mp, f);
+  if (d_symplectic.value()) m_stability.check(mop, dt);
   const VecId a = mop.allocDeriv();
 
   // a = M^-1 f: a division for lumped masses, a linear solve otherwise.

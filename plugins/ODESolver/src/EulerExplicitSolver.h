@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "StabilityBound.h"
 #include "core/Link.h"
 #include "simulation/Solvers.h"
 
@@ -11,8 +12,9 @@ namespace stroma {
 ///   a = M^-1 f(x_n, v_n),  v_{n+1} = v_n + h a,  x_{n+1} = x_n + h v_{n+1};
 /// otherwise forward Euler, x_{n+1} = x_n + h v_n. With lumped masses M^-1 f is a division per
 /// degree of freedom; with a non-diagonal mass (MeshMatrixMass without lumping) M a = f is
-/// solved by the node's linear solver. Stable only below the Courant time step of the stiffest
-/// element.
+/// solved by the node's linear solver. Symplectic Euler is stable only below 2 / omega_max (the
+/// Courant time step of the stiffest element): estimated at the first step with lumped
+/// masses (output `criticalTimeStep`), and a larger dt is warned about.
 class EulerExplicitSolver final : public OdeSolver {
  public:
   Data<bool> d_symplectic{this, "symplectic", true,
@@ -31,6 +33,9 @@ class EulerExplicitSolver final : public OdeSolver {
 
  private:
   long long m_step = 0;
+
+ public:
+  ExplicitStabilityCheck m_stability{*this, 2.0, "symplectic Euler"};
 };
 
 }  // namespace stroma

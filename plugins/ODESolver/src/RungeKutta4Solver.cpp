@@ -33,6 +33,7 @@ void RungeKutta4Solver::solve(MechanicalOperations& mop, double dt) {
 
   // k1 = (v_n, a(x_n, v_n)).
   if (!acceleration(mop, h, x, v, a)) return;
+  m_stability.check(mop, h);  // linearized at (x_n, v_n)
   mop.vOp(sumV, v);
   mop.vOp(sumA, a);
   mop.vOp(xs, x, v, h / 2);
