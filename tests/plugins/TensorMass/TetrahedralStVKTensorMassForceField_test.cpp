@@ -133,6 +133,27 @@ TEST(StandardTetrahedralFEMForceField, NeoHookeanAndStVKAgreeForSmallStrains) {
   EXPECT_LT(relativeDifference(neoHookean, stvk), 1e-4);
 }
 
+TEST(StandardTetrahedralFEMForceField, NeoHookeanInvertedWhileRunningWarnsOnceAndGivesNoForce) {
+  // det F <= 0: the neo-Hookean energy is not defined. The element is left out, with one
+  // warning naming it and the time; StVK (defined everywhere) still pushes it back.
+  FemMesh mesh;
+  mesh.points = {{0, 0, 0}, {0.1, 0, 0}, {0, 0.1, 0}, {0, 0, 0.1}};
+  mesh.tetrahedra = {{0, 1, 2, 3}};
+  std::vector<Vec3d> x = mesh.points;
+  x[3].z() = -0.05;  // through the opposite face
+  Runtime runtime;
+  Scene scene(runtime);
+  ASSERT_TRUE(loadQuietly(scene, tensorMassScene(mesh, standardFem("NeoHookean"))));
+  setPositions(scene, x);
+  for (int i = 0; i < 2; ++i) EXPECT_EQ(computeForces(scene).norm(), 0);
+  int warnings = 0;
+  for (const Message& m : scene.log().messages())
+    warnings += m.level == MessageLevel::warning &&
+                m.text.find("tetrahedron 0 is inverted") != std::string::npos;
+  EXPECT_EQ(warnings, 1) << describe(scene.log());
+  EXPECT_GT(forcesAt(tensorMassScene(mesh, standardFem("StVenantKirchhoff")), x).norm(), 0);
+}
+
 // --- Bad input -----------------------------------------------------------------------------
 
 struct BadMaterial {
