@@ -1,0 +1,470 @@
+// SPDX-License-Identifier: MIT
+#include "TetrahedralFiberReinforcementForceField.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "core/Node.h"
+
+namespace stroma {
+
+namespace {
+
+using anisotropy::ConstantsStatus;
+using anisotropy::EngineeringConstants;
+using anisotropy::SpencerParameters;
+using Vector12d = fem::ElementVector<4>;
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+/// "3, 17, 42" or "3, 17, 42, ... (12 in all)": element indices for messages, the first 10.
+std::string describeIndices(const std::vector<std::size_t>& indices) {
+  constexpr std::size_t kShown = 10;
+  std::string text;
+  for (std::size_t i = 0; i < indices.size() && i < kShown; ++i)
+    text += (i ? ", " : "") + std::to_string(indices[i]);
+  if (indices.size() > kShown) text += ", ... (" + std::to_string(indices.size()) + " in all)";
+  return text;
+}
+
+/// The numbers of a Data's text ("3000", "3000 2000"), or fewer when one does not parse.
+std::vector<double> parseNumbers(const std::string& text) {
+  std::vector<double> numbers;
+  const char* p = text.data();
+  const char* end = p + text.size();
+  while (p < end) {
+    while (p < end && std::isspace(static_cast<unsigned char>(*p))) ++p;
+    if (p == end) break;
+    double value = 0;
+    const auto [next, error] = std::from_chars(p, end, value);
+    if (error != std::errc()) break;
+    numbers.push_back(value);
+    p = next;
+  }
+  return numbers;
+}
+
+const Topology* findTetrahedralTopology(Base& owner, const Link<Topology>& link) {
+  if (link) {
+    if (link->tetrahedra().empty()) {
+      owner.msgError("the topology " + link->path() + " has no tetrahedra", "topology");
+      return nullptr;
+    }
+    return link.get();
+  }
+  for (const Node* node = owner.node(); node; node = node->parent()) {
+    const Topology* found = nullptr;
+    for (const Topology* topology : node->getAll<Topology>())
+      if (!topology->tetrahedra().empty()) found = topology;
+    if (found) return found;
+  }
+  owner.msgError(
+      "needs a topology with tetrahedra (TetrahedronSetTopologyContainer, MeshTopology, or a "
+      "grid through Hexa2TetraTopologicalMapping) in its node or above, or a 'topology' link",
+      "topology");
+  return nullptr;
+}
+
+constexpr const char* kEngineeringNames =
+    "youngModulusL, youngModulusT, poissonRatioLT, poissonRatioTT, shearModulusLT";
+constexpr const char* kSpencerNames = "alpha, beta, shearModulusL, shearModulusT";
+
+}  // namespace
+
+void TetrahedralFiberReinforcementForceField::init() {
+  ForceField<Vec3Types>::init();
+  m_ready = false;
+  if (!mstate() || !readMesh() || !build(true)) {
+    setInvalid();
+    return;
+  }
+  m_ready = true;
+}
+
+void TetrahedralFiberReinforcementForceField::bwdInit() {
+  // After every init of the node: the fields beside have found their states.
+  if (m_ready) compareWithIsotropicNeighbours(true);
+}
+
+void TetrahedralFiberReinforcementForceField::report(bool atInit, const std::string& text,
+                                                     const std::string& field) {
+  if (atInit)
+    msgError(text, field);
+  else
+    msgWarning(text + "; the change is not applied, the previous material and fibers stay", field);
+}
+
+bool TetrahedralFiberReinforcementForceField::readMesh() {
+  m_topology = findTetrahedralTopology(*this, l_topology);
+  if (!m_topology) return false;
+  m_tetrahedra = m_topology->tetrahedra();
+  m_topologyRevision = m_topology->revision();
+  m_pointCount = mstate()->size();
+  m_restPositions = mstate()->readCoord(VecId::restPosition());
+  if (m_restPositions.size() != m_pointCount) {
+    msgError("the mechanical state " + mstate()->path() + " has " +
+                 std::to_string(m_restPositions.size()) + " rest positions for " +
+                 std::to_string(m_pointCount) + " points",
+             "mstate");
+    return false;
+  }
+  // The rest shape of each tetrahedron; both orientations work (Ke uses |V|).
+  std::vector<std::size_t> outOfRange, flat;
+  m_shapes.assign(m_tetrahedra.size(), {});
+  for (std::size_t t = 0; t < m_tetrahedra.size(); ++t) {
+    fem::TetrahedronVectors rest;
+    bool inRange = true;
+    for (int i = 0; i < 4; ++i) {
+      const Index p = m_tetrahedra[t][i];
+      if (p >= m_pointCount) {
+        inRange = false;
+        break;
+      }
+      rest.col(i) = m_restPositions[p];
+    }
+    if (!inRange)
+      outOfRange.push_back(t);
+    else if (fem::computeTetrahedronShape(rest, m_shapes[t]) != fem::ElementStatus::ok)
+      flat.push_back(t);
+  }
+  const std::string where = " of " + m_topology->path();
+  if (!outOfRange.empty())
+    msgError(std::to_string(outOfRange.size()) + " tetrahedra" + where +
+                 " use points out of range of the " + std::to_string(m_pointCount) +
+                 " points of the mechanical state: elements " + describeIndices(outOfRange),
+             "topology");
+  if (!flat.empty())
+    msgError(std::to_string(flat.size()) + " tetrahedra" + where +
+                 " are flat in the rest shape (zero volume, or non-finite positions): elements " +
+                 describeIndices(flat),
+             "topology");
+  return outOfRange.empty() && flat.empty();
+}
+
+std::optional<SpencerParameters> TetrahedralFiberReinforcementForceField::readMaterial(
+    bool atInit) {
+  const std::vector<const Data<double>*> engineering{
+      &d_youngModulusL, &d_youngModulusT, &d_poissonRatioLT, &d_poissonRatioTT, &d_shearModulusLT};
+  const std::vector<const Data<double>*> spencer{&d_alpha, &d_beta, &d_shearModulusL,
+                                                 &d_shearModulusT};
+  auto anySet = [](const auto& fields) {
+    for (const auto* d : fields)
+      if (d->isSet()) return true;
+    return false;
+  };
+  const bool useEngineering = anySet(engineering), useSpencer = anySet(spencer);
+  if (useEngineering && useSpencer) {
+    report(atInit,
+           std::string("give either the engineering constants (") + kEngineeringNames +
+               ") or Spencer's parameters (" + kSpencerNames + "), not both",
+           "alpha");
+    return std::nullopt;
+  }
+  if (!useEngineering && !useSpencer) {
+    report(atInit,
+           std::string("no material: give the five engineering constants of the "
+                       "fiber-reinforced material (") +
+               kEngineeringNames + "), or Spencer's parameters (" + kSpencerNames + ")",
+           "youngModulusL");
+    return std::nullopt;
+  }
+  // Every parameter of the chosen set: none has a meaningful default.
+  bool complete = true;
+  for (const auto* d : useEngineering ? engineering : spencer) {
+    if (d->isSet()) continue;
+    report(atInit,
+           "missing: " + std::string(useEngineering
+                                         ? std::string("the engineering constants need all "
+                                                       "five of ") +
+                                               kEngineeringNames
+                                         : std::string("Spencer's parameters need all four of ") +
+                                               kSpencerNames),
+           d->name());
+    complete = false;
+  }
+  if (!complete) return std::nullopt;
+
+  if (useSpencer) {
+    m_engineering = false;
+    for (const Data<double>* d : {&d_shearModulusL, &d_shearModulusT})
+      if (!(d->value() > 0)) {
+        report(atInit, "expected a shear modulus > 0, got " + number(d->value()), d->name());
+        return std::nullopt;
+      }
+    return SpencerParameters{.lambda = 0,
+                             .muT = d_shearModulusT.value(),
+                             .alpha = d_alpha.value(),
+                             .beta = d_beta.value(),
+                             .muL = d_shearModulusL.value()};
+  }
+
+  m_engineering = true;
+  const EngineeringConstants c{.youngModulusL = d_youngModulusL.value(),
+                               .youngModulusT = d_youngModulusT.value(),
+                               .poissonRatioLT = d_poissonRatioLT.value(),
+                               .poissonRatioTT = d_poissonRatioTT.value(),
+                               .shearModulusLT = d_shearModulusLT.value()};
+  switch (anisotropy::checkEngineeringConstants(c)) {
+    case ConstantsStatus::ok:
+      break;
+    case ConstantsStatus::youngModulusL:
+      report(atInit, "expected E_L > 0, got " + number(c.youngModulusL), "youngModulusL");
+      return std::nullopt;
+    case ConstantsStatus::youngModulusT:
+      report(atInit, "expected E_T > 0, got " + number(c.youngModulusT), "youngModulusT");
+      return std::nullopt;
+    case ConstantsStatus::shearModulusLT:
+      report(atInit, "expected G_LT > 0, got " + number(c.shearModulusLT), "shearModulusLT");
+      return std::nullopt;
+    case ConstantsStatus::poissonRatioTT:
+      report(atInit,
+             "expected -1 < poissonRatioTT < 1 (the material is not positive definite "
+             "otherwise), got " +
+                 number(c.poissonRatioTT),
+             "poissonRatioTT");
+      return std::nullopt;
+    case ConstantsStatus::poissonRatioLT:
+      report(atInit,
+             "the compliance is not positive definite: expected poissonRatioLT^2 < "
+             "(1 - poissonRatioTT) youngModulusL / (2 youngModulusT) = " +
+                 number((1 - c.poissonRatioTT) * c.youngModulusL / (2 * c.youngModulusT)) +
+                 ", got poissonRatioLT = " + number(c.poissonRatioLT),
+             "poissonRatioLT");
+      return std::nullopt;
+  }
+  // The isotropic part must be one an isotropic force field accepts (3 lambda + 2 mu_T > 0).
+  const double n = c.youngModulusT / c.youngModulusL;
+  if (!(1 + 2 * c.poissonRatioTT + c.poissonRatioLT * c.poissonRatioLT * n > 0)) {
+    report(atInit,
+           "the isotropic part of this material has no positive bulk modulus (no youngModulus "
+           "and poissonRatio in (-1, 0.5) give it): expected 1 + 2 poissonRatioTT + "
+           "poissonRatioLT^2 youngModulusT / youngModulusL > 0, got poissonRatioTT = " +
+               number(c.poissonRatioTT),
+           "poissonRatioTT");
+    return std::nullopt;
+  }
+  return anisotropy::computeSpencerParameters(c);
+}
+
+bool TetrahedralFiberReinforcementForceField::readFibers(bool atInit,
+                                                         std::vector<Vec3d>& directions) {
+  const std::vector<Vec3d>& perElement = d_fiberDirections.value();
+  if (perElement.empty()) {
+    const Vec3d a = d_fiberDirection.value();
+    if (!(a.norm() > 0) || !a.allFinite()) {
+      report(atInit,
+             "expected a non-zero direction, got " + number(a.x()) + " " + number(a.y()) + " " +
+                 number(a.z()),
+             "fiberDirection");
+      return false;
+    }
+    directions.assign(1, a.normalized());
+    return true;
+  }
+  if (perElement.size() != m_tetrahedra.size()) {
+    report(atInit,
+           "expected one direction per tetrahedron: got " + std::to_string(perElement.size()) +
+               " directions for the " + std::to_string(m_tetrahedra.size()) + " tetrahedra of " +
+               m_topology->path(),
+           "fiberDirections");
+    return false;
+  }
+  std::vector<std::size_t> zero;
+  directions.resize(perElement.size());
+  for (std::size_t t = 0; t < perElement.size(); ++t) {
+    if (!(perElement[t].norm() > 0) || !perElement[t].allFinite())
+      zero.push_back(t);
+    else
+      directions[t] = perElement[t].normalized();
+  }
+  if (!zero.empty()) {
+    report(atInit,
+           "expected non-zero directions; zero for " + std::to_string(zero.size()) +
+               " tetrahedra: elements " + describeIndices(zero),
+           "fiberDirections");
+    return false;
+  }
+  return true;
+}
+
+std::uint64_t TetrahedralFiberReinforcementForceField::parameterVersion() const {
+  // Versions only grow: their sum changes whenever one of them does.
+  return d_fiberDirection.version() + d_fiberDirections.version() + d_youngModulusL.version() +
+         d_youngModulusT.version() + d_poissonRatioLT.version() + d_poissonRatioTT.version() +
+         d_shearModulusLT.version() + d_alpha.version() + d_beta.version() +
+         d_shearModulusL.version() + d_shearModulusT.version();
+}
+
+bool TetrahedralFiberReinforcementForceField::build(bool atInit) {
+  m_parameterVersion = parameterVersion();
+  const std::optional<SpencerParameters> parameters = readMaterial(atInit);
+  std::vector<Vec3d> directions;
+  const bool fibersRead = readFibers(atInit, directions);
+  if (!parameters || !fibersRead) return false;
+  m_parameters = *parameters;
+  const SpencerParameters& p = m_parameters;
+
+  // Ke = V B^T C_r B of each tetrahedron, C_r about its fiber direction.
+  fem::Matrix6d C =
+      anisotropy::computeReinforcementElasticity(directions[0], p.alpha, p.beta, p.muL, p.muT);
+  m_stiffness.resize(m_tetrahedra.size());
+  for (std::size_t t = 0; t < m_tetrahedra.size(); ++t) {
+    if (directions.size() > 1)
+      C = anisotropy::computeReinforcementElasticity(directions[t], p.alpha, p.beta, p.muL, p.muT);
+    m_stiffness[t] = fem::computeTetrahedronStiffness(m_shapes[t], C);
+  }
+
+  if (m_engineering) {
+    const anisotropy::IsotropicConstants iso =
+        anisotropy::computeIsotropicConstants(p.lambda, p.muT);
+    d_isotropicYoungModulus.setValue(iso.youngModulus);
+    d_isotropicPoissonRatio.setValue(iso.poissonRatio);
+    msgInfo("transversely isotropic material lambda = " + number(p.lambda) +
+            " Pa, mu_T = " + number(p.muT) + " Pa, alpha = " + number(p.alpha) +
+            " Pa, beta = " + number(p.beta) + " Pa, mu_L = " + number(p.muL) +
+            " Pa: this component adds the alpha, beta and mu_L - mu_T terms; give the isotropic "
+            "force field beside it youngModulus=\"" +
+            number(iso.youngModulus) + "\" poissonRatio=\"" + number(iso.poissonRatio) +
+            "\" (or link them to @" + name() + ".isotropicYoungModulus and @" + name() +
+            ".isotropicPoissonRatio)");
+  }
+  return true;
+}
+
+void TetrahedralFiberReinforcementForceField::compareWithIsotropicNeighbours(bool atInit) {
+  if (!node()) return;
+  bool found = false;
+  for (BaseForceField* field : node()->getAll<BaseForceField>()) {
+    if (field == this) continue;
+    const auto states = field->states();
+    if (std::find(states.begin(), states.end(), mstate()) == states.end()) continue;
+    const BaseData* youngData = field->findData("youngModulus");
+    const BaseData* poissonData = field->findData("poissonRatio");
+    if (!youngData || !poissonData) continue;
+    const std::vector<double> young = parseNumbers(youngData->valueText());
+    const std::vector<double> poisson = parseNumbers(poissonData->valueText());
+    if (young.size() != 1 || poisson.size() != 1) continue;  // per-element moduli: not checked
+    found = true;
+    const double E = young[0], nu = poisson[0];
+    const std::string who = field->className() + " " + field->path();
+
+    // The reinforcement is small-strain: beside a corotational field, rotations would strain it.
+    if (const BaseData* method = field->findData("method");
+        method && method->valueText() != "small")
+      msgWarning("the isotropic force field " + who + " has method=\"" + method->valueText() +
+                     "\", this reinforcement is small-strain (linear): a rotation of the body "
+                     "gives it spurious forces; use method=\"small\" beside it",
+                 "mstate");
+
+    if (m_engineering) {
+      const anisotropy::IsotropicConstants iso =
+          anisotropy::computeIsotropicConstants(m_parameters.lambda, m_parameters.muT);
+      if (std::abs(E - iso.youngModulus) > 1e-3 * iso.youngModulus ||
+          std::abs(nu - iso.poissonRatio) > 1e-3)
+        msgWarning("the isotropic force field " + who + " has youngModulus=" + number(E) +
+                       " poissonRatio=" + number(nu) +
+                       "; with these engineering constants the isotropic part is "
+                       "youngModulus=" +
+                       number(iso.youngModulus) + " poissonRatio=" + number(iso.poissonRatio) +
+                       ": the sum is not the material asked for",
+                   "youngModulusL");
+    } else if (nu > -1 && nu < 0.5 && E > 0) {
+      const double mu = E / (2 * (1 + nu)), lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+      if (std::abs(mu - m_parameters.muT) > 1e-3 * m_parameters.muT)
+        msgWarning("the isotropic force field " + who +
+                       " has the shear modulus E / (2 (1 + nu)) = " + number(mu) +
+                       " Pa, shearModulusT is " + number(m_parameters.muT) + " Pa",
+                   "shearModulusT");
+      // The sum must be positive definite (the reinforcement alone need not be).
+      SpencerParameters total = m_parameters;
+      total.lambda = lambda;
+      const Eigen::SelfAdjointEigenSolver<fem::Matrix6d> eigen(
+          anisotropy::computeTransverselyIsotropicElasticity(Vec3d::UnitX(), total));
+      if (!(eigen.eigenvalues().minCoeff() > 0))
+        report(atInit,
+               "with the isotropic part of " + who + " (lambda = " + number(lambda) +
+                   " Pa), the material is not positive definite (smallest eigenvalue of its "
+                   "elasticity " +
+                   number(eigen.eigenvalues().minCoeff()) +
+                   " Pa): change alpha, beta or "
+                   "shearModulusL",
+               "beta");
+    }
+  }
+  if (!found)
+    msgInfo(
+        "no isotropic force field with one youngModulus and poissonRatio beside it: this "
+        "component adds only the anisotropic part of the material");
+}
+
+bool TetrahedralFiberReinforcementForceField::refresh() {
+  if (m_topology &&
+      (m_topology->revision() != m_topologyRevision || mstate()->size() != m_pointCount)) {
+    // The mesh changed: start again (allocates, as a topological change does).
+    m_ready = readMesh() && build(true);
+  } else if (m_ready && parameterVersion() != m_parameterVersion) {
+    build(false);  // an invalid change keeps the previous element matrices
+  }
+  return m_ready;
+}
+
+void TetrahedralFiberReinforcementForceField::addForce(const MechanicalParams&, VecDeriv& f,
+                                                       const VecCoord& x, const VecDeriv&) {
+  if (!mstate() || !refresh()) return;
+  for (std::size_t t = 0; t < m_tetrahedra.size(); ++t) {
+    const Tetrahedron& tet = m_tetrahedra[t];
+    Vector12d u;
+    for (int i = 0; i < 4; ++i) u.segment<3>(3 * i) = x[tet[i]] - m_restPositions[tet[i]];
+    const Vector12d fe = m_stiffness[t] * u;
+    for (int i = 0; i < 4; ++i) f[tet[i]] -= fe.segment<3>(3 * i);
+  }
+}
+
+void TetrahedralFiberReinforcementForceField::addDForce(const MechanicalParams& mp, VecDeriv& df,
+                                                        const VecDeriv& dx) {
+  if (!m_ready || mp.kFactor == 0) return;
+  for (std::size_t t = 0; t < m_tetrahedra.size(); ++t) {
+    const Tetrahedron& tet = m_tetrahedra[t];
+    Vector12d d;
+    for (int i = 0; i < 4; ++i) d.segment<3>(3 * i) = dx[tet[i]];
+    const Vector12d dfe = m_stiffness[t] * d;
+    for (int i = 0; i < 4; ++i) df[tet[i]] -= mp.kFactor * dfe.segment<3>(3 * i);
+  }
+}
+
+void TetrahedralFiberReinforcementForceField::addKToMatrix(const MechanicalParams& mp,
+                                                           MatrixAccumulator& matrix,
+                                                           std::size_t offset) {
+  if (!m_ready) return;
+  for (std::size_t t = 0; t < m_tetrahedra.size(); ++t) {
+    const Tetrahedron& tet = m_tetrahedra[t];
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        matrix.addBlock(offset + 3 * tet[i], offset + 3 * tet[j],
+                        -mp.kFactor * m_stiffness[t].block<3, 3>(3 * i, 3 * j));
+  }
+}
+
+double TetrahedralFiberReinforcementForceField::potentialEnergy(const MechanicalParams&,
+                                                                const VecCoord& x) const {
+  if (!m_ready || x.size() != m_pointCount) return 0;
+  double energy = 0;
+  for (std::size_t t = 0; t < m_tetrahedra.size(); ++t) {
+    const Tetrahedron& tet = m_tetrahedra[t];
+    Vector12d u;
+    for (int i = 0; i < 4; ++i) u.segment<3>(3 * i) = x[tet[i]] - m_restPositions[tet[i]];
+    energy += 0.5 * u.dot(m_stiffness[t] * u);
+  }
+  return energy;
+}
+
+}  // namespace stroma

@@ -1,0 +1,259 @@
+// SPDX-License-Identifier: MIT
+// TetrahedralFiberReinforcementForceField: the generic force-field checks (fibers per object
+// and per element), the energy of a uniform strain against the formula, no force for
+// isotropic constants, rotating the fibers with the body, and bad input.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cctype>
+#include <random>
+
+#include "AnisotropyTestScenes.h"
+#include "plugins/TensorMass/TensorMassTestScenes.h"
+#include "simulation/ForceField.h"
+#include "support/ForceFieldTest.h"
+
+namespace stroma::test {
+namespace {
+
+std::vector<Vec3d> randomDirections(std::size_t count, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  std::vector<Vec3d> directions(count);
+  for (Vec3d& a : directions) a = Vec3d(uniform(rng), uniform(rng), uniform(rng));
+  return directions;
+}
+
+TEST(TetrahedralFiberReinforcementForceField, PassesTheForceFieldTestWithOneFiberDirection) {
+  checkForceField(
+      tensorMassScene(makeRandomTetrahedralMesh(), fiberField(kTissue, Vec3d(1, 2, 0.5))),
+      {.hasEnergy = true, .rotationInvariant = false});
+}
+
+TEST(TetrahedralFiberReinforcementForceField, PassesTheForceFieldTestWithFibersPerElement) {
+  const FemMesh mesh = makeRandomTetrahedralMesh();
+  checkForceField(tensorMassScene(mesh, fiberField(kTissue, Vec3d::UnitX(),
+                                                   randomDirections(mesh.tetrahedra.size(), 4))),
+                  {.hasEnergy = true, .rotationInvariant = false});
+}
+
+TEST(TetrahedralFiberReinforcementForceField, PassesTheForceFieldTestBesideItsIsotropicPart) {
+  // The whole transversely isotropic material, tested as a sum through the named field and
+  // the system matrix; with Spencer's parameters this time.
+  const anisotropy::SpencerParameters p = anisotropy::computeSpencerParameters(kTissue);
+  const std::string fields =
+      "<TetrahedralFiberReinforcementForceField name=\"fibers\" fiberDirection=\"0 1 1\" "
+      "alpha=\"" +
+      exact(p.alpha) + "\" beta=\"" + exact(p.beta) + "\" shearModulusL=\"" + exact(p.muL) +
+      "\" shearModulusT=\"" + exact(p.muT) + "\"/><TetrahedronFEMForceField method=\"small\" " +
+      isotropicPartText(kTissue) + "/>";
+  checkForceField(tensorMassScene(makeRandomTetrahedralMesh(), fields),
+                  {.forceField = "/root/body/fibers", .hasEnergy = true});
+}
+
+TEST(TetrahedralFiberReinforcementForceField, UniformStrainHasTheEnergyOfTheFormula) {
+  // u = eps X: every tetrahedron has the strain eps, the energy is the mesh volume times
+  // alpha (tr eps)(a.eps a) + 2 (mu_L - mu_T) a.eps^2 a + beta/2 (a.eps a)^2.
+  const FemMesh mesh = makeRandomTetrahedralMesh();
+  const Vec3d a = Vec3d(0.3, -1, 2).normalized();
+  Eigen::Matrix3d eps;
+  eps << 0.01, 0.004, -0.002, 0.004, -0.006, 0.003, -0.002, 0.003, 0.008;
+  Runtime runtime;
+  Scene scene(runtime);
+  ASSERT_TRUE(loadQuietly(scene, tensorMassScene(mesh, fiberField(kTissue, a))));
+  std::vector<Vec3d> x = mesh.points;
+  for (Vec3d& p : x) p += eps * p;
+  setPositions(scene, x);
+  const anisotropy::SpencerParameters p = anisotropy::computeSpencerParameters(kTissue);
+  const double expected = meshVolume(mesh) * anisotropy::computeReinforcementEnergyDensity(
+                                                 eps, a, p.alpha, p.beta, p.muL, p.muT);
+  const double energy =
+      objectAt<BaseForceField>(scene, "/root/body/fibers")->energy(MechanicalParams{});
+  EXPECT_NEAR(energy, expected, 1e-12 * std::abs(expected));
+  // A uniform stress: the forces on the interior points vanish.
+}
+
+TEST(TetrahedralFiberReinforcementForceField, IsotropicConstantsAddNoForce) {
+  // E_L = E_T, nu_LT = nu_TT, G_LT = E / (2 (1 + nu)): alpha = beta = mu_L - mu_T = 0 to
+  // round-off, and the isotropic part is (E, nu) itself.
+  const double E = 3000, nu = 0.4;
+  const anisotropy::EngineeringConstants iso{.youngModulusL = E,
+                                             .youngModulusT = E,
+                                             .poissonRatioLT = nu,
+                                             .poissonRatioTT = nu,
+                                             .shearModulusLT = E / (2 * (1 + nu))};
+  const FemMesh mesh = makeRandomTetrahedralMesh();
+  const std::vector<Vec3d> x =
+      displaced(mesh.points, randomDirections(mesh.points.size(), 8));  // up to 1 m: large
+  const Eigen::VectorXd fibers = forcesAt(
+      tensorMassScene(mesh,
+                      fiberField(iso, Vec3d::UnitX(), randomDirections(mesh.tetrahedra.size(), 2))),
+      x);
+  const Eigen::VectorXd isotropic =
+      forcesAt(tensorMassScene(mesh,
+                               "<TetrahedronFEMForceField method=\"small\" youngModulus=\"3000\" "
+                               "poissonRatio=\"0.4\"/>"),
+               x);
+  ASSERT_EQ(fibers.size(), isotropic.size());
+  EXPECT_LT(fibers.norm(), 1e-13 * isotropic.norm());
+  Runtime runtime;
+  Scene scene(runtime);
+  ASSERT_TRUE(loadQuietly(scene, tensorMassScene(mesh, fiberField(iso, Vec3d::UnitZ()))));
+  auto* field = objectAt<Base>(scene, "/root/body/fibers");
+  EXPECT_NEAR(std::stod(field->findData("isotropicYoungModulus")->valueText()), E, 1e-9 * E);
+  EXPECT_NEAR(std::stod(field->findData("isotropicPoissonRatio")->valueText()), nu, 1e-12);
+}
+
+TEST(TetrahedralFiberReinforcementForceField, RotatingFibersAndBodyTogetherRotatesTheForces) {
+  // Body, displacements and fibers rotated by Q: the forces are Q f and the energy is the same
+  // (a material frame property of the law, per object and per element).
+  const FemMesh mesh = makeRandomTetrahedralMesh();
+  const Eigen::Matrix3d Q =
+      Eigen::AngleAxisd(0.9, Vec3d(1, -2, 0.5).normalized()).toRotationMatrix();
+  const std::vector<Vec3d> x =
+      displaced(mesh.points, randomDisplacements(mesh.points.size(), 0.02));
+  FemMesh turned = mesh;
+  turned.points = rotated(mesh.points, Q);
+  const std::vector<Vec3d> perElement = randomDirections(mesh.tetrahedra.size(), 6);
+  std::vector<Vec3d> perElementTurned = perElement;
+  for (Vec3d& a : perElementTurned) a = Q * a;
+  const Vec3d a(0.2, 1, -0.4);
+  for (bool perObject : {true, false}) {
+    SCOPED_TRACE(perObject ? "per object" : "per element");
+    const std::string before =
+        perObject ? fiberField(kTissue, a) : fiberField(kTissue, a, perElement);
+    const std::string after =
+        perObject ? fiberField(kTissue, Q * a) : fiberField(kTissue, a, perElementTurned);
+    const Eigen::VectorXd f = forcesAt(tensorMassScene(mesh, before), x);
+    const Eigen::VectorXd g = forcesAt(tensorMassScene(turned, after), rotated(x, Q));
+    ASSERT_EQ(f.size(), g.size());
+    Eigen::VectorXd expected(f.size());
+    for (Eigen::Index i = 0; i < f.size(); i += 3) expected.segment<3>(i) = Q * f.segment<3>(i);
+    EXPECT_LT(relativeDifference(g, expected), 1e-12);
+    // Not the same as turning the body alone: the fibers matter.
+    const Eigen::VectorXd h = forcesAt(tensorMassScene(turned, before), rotated(x, Q));
+    EXPECT_GT(relativeDifference(h, expected), 0.05);
+  }
+}
+
+TEST(TetrahedralFiberReinforcementForceField, ChangesWhileRunningTakeEffectAtTheNextStep) {
+  // Fibers along x then y: the forces change, and are those of a fresh field along y.
+  const FemMesh mesh = makeRandomTetrahedralMesh();
+  const std::vector<Vec3d> x =
+      displaced(mesh.points, randomDisplacements(mesh.points.size(), 0.02));
+  Runtime runtime;
+  Scene scene(runtime);
+  ASSERT_TRUE(loadQuietly(scene, tensorMassScene(mesh, fiberField(kTissue, Vec3d::UnitX()))));
+  setPositions(scene, x);
+  auto* field = objectAt<Base>(scene, "/root/body/fibers");
+  std::string error;
+  ASSERT_TRUE(field->findData("fiberDirection")->read("0 2 0", error)) << error;
+  const Eigen::VectorXd alongY =
+      forcesAt(tensorMassScene(mesh, fiberField(kTissue, Vec3d::UnitY())), x);
+  EXPECT_LT(relativeDifference(computeForces(scene), alongY), 1e-14);
+  // An invalid change is a warning naming the field; the previous fibers stay.
+  ASSERT_TRUE(field->findData("fiberDirection")->read("0 0 0", error)) << error;
+  EXPECT_LT(relativeDifference(computeForces(scene), alongY), 1e-14);
+  bool warned = false;
+  for (const Message& m : scene.log().messages())
+    warned |= m.level == MessageLevel::warning && m.field == "fiberDirection";
+  EXPECT_TRUE(warned) << describe(scene.log());
+}
+
+TEST(TetrahedralFiberReinforcementForceField, WarnsWhenTheIsotropicFieldBesideDoesNotMatch) {
+  const FemMesh mesh = makeRandomTetrahedralMesh();
+  for (const char* isotropic :
+       {"<TetrahedralTensorMassForceField youngModulus=\"5000\" poissonRatio=\"0.3\"/>",
+        "<TetrahedronFEMForceField method=\"large\" youngModulus=\"4566.98\" "
+        "poissonRatio=\"0.324425\"/>"}) {
+    Runtime runtime;
+    Scene scene(runtime);
+    ASSERT_TRUE(
+        scene.loadString(tensorMassScene(mesh, fiberField(kTissue, Vec3d::UnitX()) + isotropic)));
+    EXPECT_EQ(scene.log().count(MessageLevel::warning), 1u) << describe(scene.log());
+    EXPECT_EQ(scene.log().errorCount(), 0u) << describe(scene.log());
+  }
+  // Linked to the outputs: no warning.
+  Runtime runtime;
+  Scene scene(runtime);
+  EXPECT_TRUE(loadQuietly(
+      scene, tensorMassScene(mesh, fiberField(kTissue, Vec3d::UnitX()) +
+                                       "<TetrahedralTensorMassForceField "
+                                       "youngModulus=\"@fibers.isotropicYoungModulus\" "
+                                       "poissonRatio=\"@fibers.isotropicPoissonRatio\"/>")));
+}
+
+// --- Bad input -----------------------------------------------------------------------------
+
+struct BadInput {
+  const char* what;
+  std::string attributes;  // of the force field
+  const char* field;       // the field the error names
+  const char* text;        // part of the error
+};
+
+const std::string kConstants = constantsText(kTissue);
+
+std::string withConstants(const std::string& changed) {
+  // kTissue with one attribute replaced (or added).
+  std::string text = kConstants;
+  const std::string name = changed.substr(0, changed.find('='));
+  const std::size_t at = text.find(name + "=");
+  if (at == std::string::npos) return text + " " + changed;
+  const std::size_t end = text.find('"', text.find('"', at) + 1);
+  return text.substr(0, at) + changed + text.substr(end + 1);
+}
+
+class FiberReinforcementBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(FiberReinforcementBadInput, IsAnErrorNamingTheComponentAndField) {
+  const BadInput& c = GetParam();
+  const FemMesh mesh = makeRandomTetrahedralMesh();  // 72 tetrahedra
+  Runtime runtime;
+  Scene scene(runtime);
+  const bool loaded = scene.loadString(tensorMassScene(
+      mesh, "<TetrahedralFiberReinforcementForceField name=\"fibers\" " + c.attributes + "/>"));
+  EXPECT_FALSE(loaded && scene.log().errorCount() == 0) << describe(scene.log());
+  bool found = false;
+  for (const Message& m : errors(scene.log()))
+    found |=
+        m.field == c.field && m.text.find(c.text) != std::string::npos &&
+        formatForConsole(m).find("/root/body/fibers (TetrahedralFiberReinforcementForceField)") !=
+            std::string::npos;
+  EXPECT_TRUE(found) << c.what << ":\n" << describe(scene.log());
+  scene.step();  // no crash when asked to step anyway
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    TetrahedralFiberReinforcementForceField, FiberReinforcementBadInput,
+    ::testing::Values(
+        BadInput{"zero fiber direction", kConstants + " fiberDirection=\"0 0 0\"", "fiberDirection",
+                 "non-zero"},
+        BadInput{"wrong per-element count", kConstants + " fiberDirections=\"1 0 0  0 1 0  0 0 1\"",
+                 "fiberDirections", "got 3 directions for the 72 tetrahedra"},
+        BadInput{"nu_TT = 1", withConstants("poissonRatioTT=\"1\""), "poissonRatioTT",
+                 "-1 < poissonRatioTT < 1"},
+        BadInput{"compliance not positive definite", withConstants("poissonRatioLT=\"1.3\""),
+                 "poissonRatioLT", "not positive definite"},
+        BadInput{"zero E_L", withConstants("youngModulusL=\"0\""), "youngModulusL", "> 0"},
+        BadInput{"negative G_LT", withConstants("shearModulusLT=\"-4000\""), "shearModulusLT",
+                 "> 0"},
+        BadInput{"isotropic part without bulk modulus", withConstants("poissonRatioTT=\"-0.6\""),
+                 "poissonRatioTT", "bulk modulus"},
+        BadInput{"a missing constant",
+                 "youngModulusL=\"3e4\" youngModulusT=\"5e3\" "
+                 "poissonRatioLT=\"0.35\" shearModulusLT=\"4e3\"",
+                 "poissonRatioTT", "all five"},
+        BadInput{"no material", "", "youngModulusL", "no material"},
+        BadInput{"both kinds of parameters", kConstants + " alpha=\"100\"", "alpha", "not both"},
+        BadInput{"Spencer without mu_T", "alpha=\"1\" beta=\"2\" shearModulusL=\"3\"",
+                 "shearModulusT", "all four"}),
+    [](const auto& info) {
+      std::string name = info.param.what;
+      for (char& ch : name)
+        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+      return name;
+    });
+
+}  // namespace
+}  // namespace stroma::test
