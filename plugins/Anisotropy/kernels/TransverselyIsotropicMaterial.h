@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
-// Transversely isotropic linear elasticity about a unit fiber direction a (Spencer 1984,
-// "Continuum theory of the mechanics of fibre-reinforced composites", ch. 1, eq. 2.11; the
-// fiber-reinforced tissue that Picinbono, Delingette and Ayache point to, seed 004 section 5).
-// With A = a (x) a and the small strain eps, the energy density is
+// Transversely isotropic linear elasticity about a unit fiber direction a: the strain energy of
+// a fiber-reinforced material in Spencer's form (A. J. M. Spencer, "Continuum Theory of the
+// Mechanics of Fibre-Reinforced Composites", CISM courses 282, Springer 1984), the material of
+// the fiber-reinforced tissue that seed 004 (section 2.1) points to in its reference [9]
+// (Picinbono, Lombardo, Delingette, Ayache 2001, linear anisotropic elasticity). With
+// A = a (x) a and the small strain eps, the energy density is
 //
 //   W = lambda/2 (tr eps)^2 + mu_T tr(eps^2)                                  (isotropic part)
 //     + alpha (tr eps)(a.eps a) + 2 (mu_L - mu_T) a.eps^2 a + beta/2 (a.eps a)^2   (reinforcement)
