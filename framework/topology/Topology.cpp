@@ -196,7 +196,8 @@ bool Topology::removeTetrahedra(std::span<const Index> indices, std::string& err
   std::vector<Triangle> triangles = d_triangles.value();
   std::vector<Edge> edges = d_edges.value();
   TopologyChange change;
-  if (!removeTetrahedraFromLists(tetrahedra, triangles, edges, indices, change, error)) return false;
+  if (!removeTetrahedraFromLists(tetrahedra, triangles, edges, indices, change, error))
+    return false;
   if (change.tetrahedra.empty()) return true;
   own(d_tetrahedra);
   d_tetrahedra.setValue(std::move(tetrahedra));

@@ -32,8 +32,8 @@ template <std::size_t N>
 using KeySet = std::unordered_set<std::array<Index, N>, KeyHash>;
 
 std::array<Index, 3> faceOf(const Tetrahedron& t, int f) {
-  return sortedKey<3>({t[kTetrahedronFaces[f][0]], t[kTetrahedronFaces[f][1]],
-                       t[kTetrahedronFaces[f][2]]});
+  return sortedKey<3>(
+      {t[kTetrahedronFaces[f][0]], t[kTetrahedronFaces[f][1]], t[kTetrahedronFaces[f][2]]});
 }
 std::array<Index, 2> edgeOf(const Tetrahedron& t, int e) {
   return sortedKey<2>({t[kTetrahedronEdges[e][0]], t[kTetrahedronEdges[e][1]]});

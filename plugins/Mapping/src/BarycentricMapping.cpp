@@ -2,6 +2,8 @@
 #include "BarycentricMapping.h"
 
 #include <algorithm>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "topology/Topology.h"
 
@@ -62,6 +64,10 @@ void BarycentricMapping::init() {
   std::vector<Index> degenerate;
   m_points = barycentric::embedPoints(nodes, tetrahedra, hexahedra, points, &degenerate);
   m_jacobianReady = false;
+  m_topology = topology;
+  m_revision = topology->revision();
+  m_nodes = nodes;
+  m_outputPoints = points;
   if (!degenerate.empty())
     msgWarning(std::to_string(degenerate.size()) + " elements of " + topology->path() +
                    " have no volume and receive no point (the first is element " +
@@ -90,7 +96,72 @@ void BarycentricMapping::init() {
   applyAtInit(*this, m_options.applyRestPosition.value());
 }
 
+void BarycentricMapping::embed(const std::vector<std::size_t>& which) {
+  const auto& tetrahedra = m_topology->tetrahedra();
+  const auto& hexahedra = m_topology->hexahedra();
+  m_jacobianReady = false;
+  if (which.empty()) {
+    m_points = barycentric::embedPoints(m_nodes, tetrahedra, hexahedra, m_outputPoints);
+    return;
+  }
+  std::vector<Vec3d> points;
+  points.reserve(which.size());
+  for (std::size_t k : which) points.push_back(m_outputPoints[k]);
+  const auto embedded = barycentric::embedPoints(m_nodes, tetrahedra, hexahedra, points);
+  for (std::size_t i = 0; i < which.size(); ++i) m_points[which[i]] = embedded[i];
+}
+
+void BarycentricMapping::refresh() {
+  if (!m_topology) return;
+  const std::uint64_t now = m_topology->revision();
+  if (now == m_revision) return;
+  const auto changes = m_topology->changesSince(m_revision);
+  m_revision = now;
+  if (!changes) {
+    embed({});
+    return;
+  }
+  // Follow the renumbering; collect the points whose tetrahedron went.
+  std::vector<std::size_t> lost;
+  std::vector<char> isLost(m_points.size(), 0);
+  for (const TopologyChange& change : *changes) {
+    const auto& removal = change.tetrahedra;
+    if (removal.empty()) continue;
+    std::unordered_map<Index, Index> moved(removal.moved.begin(), removal.moved.end());
+    std::unordered_set<Index> removed(removal.removed.begin(), removal.removed.end());
+    const auto shift = static_cast<Index>(removal.sizeBefore - removal.sizeAfter);
+    for (std::size_t k = 0; k < m_points.size(); ++k) {
+      Index& element = m_points[k].element;
+      if (isLost[k] || element == kInvalidIndex) continue;
+      if (element >= removal.sizeBefore) {
+        element -= shift;  // a hexahedron: numbered after the tetrahedra
+      } else if (removed.contains(element)) {
+        isLost[k] = 1;
+        lost.push_back(k);
+      } else if (const auto it = moved.find(element); it != moved.end()) {
+        element = it->second;
+      }
+    }
+  }
+  if (lost.empty()) return;
+  m_jacobianReady = false;
+  if (m_topology->tetrahedra().empty() && m_topology->hexahedra().empty()) {
+    // Nothing left to follow: the points keep their last weights (on free points).
+    for (std::size_t k : lost) m_points[k].element = kInvalidIndex;
+  } else {
+    embed(lost);
+  }
+  if (m_reattached == 0)
+    msgWarning(std::to_string(lost.size()) +
+                   " output points lost their tetrahedron (removed) "
+                   "and follow the nearest remaining element; later re-attachments are counted "
+                   "(reattachedCount) without a warning",
+               "input_topology");
+  m_reattached += lost.size();
+}
+
 void BarycentricMapping::apply(OutVecCoord& out, const InVecCoord& in) {
+  refresh();
   out.resize(m_points.size());
   for (std::size_t k = 0; k < m_points.size(); ++k) {
     const auto& p = m_points[k];
@@ -101,6 +172,7 @@ void BarycentricMapping::apply(OutVecCoord& out, const InVecCoord& in) {
 }
 
 void BarycentricMapping::applyJ(OutVecDeriv& out, const InVecDeriv& in) {
+  refresh();
   out.resize(m_points.size());
   for (std::size_t k = 0; k < m_points.size(); ++k) {
     const auto& p = m_points[k];
@@ -111,6 +183,7 @@ void BarycentricMapping::applyJ(OutVecDeriv& out, const InVecDeriv& in) {
 }
 
 void BarycentricMapping::applyJT(InVecDeriv& in, const OutVecDeriv& out) {
+  refresh();
   for (std::size_t k = 0; k < m_points.size() && k < out.size(); ++k) {
     const auto& p = m_points[k];
     for (int i = 0; i < p.count; ++i) in[p.nodes[i]] += p.weights[i] * out[k];
@@ -118,6 +191,7 @@ void BarycentricMapping::applyJT(InVecDeriv& in, const OutVecDeriv& out) {
 }
 
 const Eigen::SparseMatrix<double>& BarycentricMapping::jacobian() {
+  refresh();
   // Constant: built once after init.
   const auto columns = static_cast<Eigen::Index>(input()->matrixSize());
   if (m_jacobianReady && m_J.cols() == columns) return m_J;

@@ -21,6 +21,12 @@ class Topology;
 /// *SetTopologyContainer components, RegularGridTopology): its tetrahedra and hexahedra are
 /// used. With useRestPosition, the weights come from the rest positions of input and output.
 /// A visual output is not mapped in batch runs, so its weights are not computed.
+///
+/// When tetrahedra are removed at run time (cutting, Topology::removeTetrahedra), the mapping
+/// follows at its next use: points whose tetrahedron moved get its new index, and points whose
+/// tetrahedron was removed are embedded again, in the geometry of init, in the nearest
+/// remaining element (a warning the first time, with the count; reattachedCount() after). The
+/// cost is a pass over the mapped points plus a search for the re-attached ones.
 class BarycentricMapping final : public Mapping<Vec3Types, Vec3Types> {
  public:
   Data<bool> d_useRestPosition{this, "useRestPosition", false,
@@ -39,11 +45,26 @@ class BarycentricMapping final : public Mapping<Vec3Types, Vec3Types> {
   /// nbOutput*3 x nbInput*3, the weights on the diagonal of 3x3 blocks.
   const Eigen::SparseMatrix<double>& jacobian() override;
 
-  /// The element and weights of each output point (after init).
-  const std::vector<barycentric::EmbeddedPoint>& embedding() const { return m_points; }
+  /// The element and weights of each output point (after init), up to date with the topology.
+  const std::vector<barycentric::EmbeddedPoint>& embedding() {
+    refresh();
+    return m_points;
+  }
+  /// How many times an output point was re-attached because its tetrahedron was removed.
+  std::size_t reattachedCount() const { return m_reattached; }
 
  private:
   const Topology* findTopology();
+  /// Follows the topology's changes since the embedding was made.
+  void refresh();
+  /// Embeds the output points `which` (all when empty) in the current elements.
+  void embed(const std::vector<std::size_t>& which);
+
+  const Topology* m_topology = nullptr;
+  std::uint64_t m_revision = 0;
+  std::vector<Vec3d> m_nodes;         ///< the input points the weights were computed on
+  std::vector<Vec3d> m_outputPoints;  ///< the output points the weights were computed on
+  std::size_t m_reattached = 0;
   std::vector<barycentric::EmbeddedPoint> m_points;
   Eigen::SparseMatrix<double> m_J;
   bool m_jacobianReady = false;

@@ -36,12 +36,24 @@ bool DiagonalMass::compute() {
   if (!computeMeshMass(*this, *m_topology, points, mesh)) return false;
   m_lumped = mesh.lumped;
   m_measure = mesh.measure;
+  m_onTetrahedra = mesh.elements == "tetrahedra";
+  if (m_onTetrahedra) m_points.assign(points.begin(), points.end());
   m_topologyRevision = m_topology->revision();
   return true;
 }
 
 void DiagonalMass::refresh() {
-  if (m_topology && m_topology->revision() != m_topologyRevision) compute();
+  if (!m_topology) return;
+  const std::uint64_t now = m_topology->revision();
+  if (now == m_topologyRevision) return;
+  const auto changes = m_onTetrahedra ? m_topology->changesSince(m_topologyRevision) : std::nullopt;
+  if (!changes) {
+    compute();
+    return;
+  }
+  for (const TopologyChange& change : *changes)
+    removeTetrahedronMasses(change, m_points, nullptr, m_lumped, m_measure);
+  m_topologyRevision = now;
 }
 
 template <class F>
@@ -85,15 +97,18 @@ double DiagonalMass::potentialEnergy(const MechanicalParams&, const VecCoord& x)
 }
 
 void DiagonalMass::addMDx(VecDeriv& f, const VecDeriv& dx, double factor) {
+  refresh();
   forEachMass(f.size(), [&](std::size_t i, double m) { f[i] += factor * m * dx[i]; });
 }
 
 void DiagonalMass::accFromF(VecDeriv& a, const VecDeriv& f) {
+  refresh();
   forEachMass(a.size(),
               [&](std::size_t i, double m) { a[i] = m > 0 ? Vec3d(f[i] / m) : Vec3d::Zero(); });
 }
 
 void DiagonalMass::addMToMatrix(MatrixAccumulator& matrix, std::size_t offset, double factor) {
+  refresh();
   forEachMass(mstate()->size(), [&](std::size_t i, double m) {
     for (std::size_t k = 0; k < 3; ++k)
       matrix.add(offset + 3 * i + k, offset + 3 * i + k, factor * m);

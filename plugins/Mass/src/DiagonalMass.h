@@ -17,7 +17,10 @@ namespace stroma {
 ///
 /// The element integrals are computed at init (and again when the topology changes); the
 /// density is read at every use, so changing massDensity or totalMass takes effect at the
-/// next step.
+/// next step. When tetrahedra are removed at run time (cutting, Topology::removeTetrahedra),
+/// the removed tetrahedra's V/4 are subtracted from their points, on the points the masses were
+/// computed on (cost proportional to the removal); a point left without elements has no mass.
+/// With totalMass the density follows the remaining volume, as a rebuild would.
 class DiagonalMass final : public Mass<Vec3Types> {
  public:
   Data<std::vector<double>> d_vertexMass{this,
@@ -84,6 +87,8 @@ class DiagonalMass final : public Mass<Vec3Types> {
   std::uint64_t m_topologyRevision = 0;
   Eigen::VectorXd m_lumped;  ///< integral of each point's shape function (unit density)
   double m_measure = 0;
+  bool m_onTetrahedra = false;  ///< computed on tetrahedra only: removals can be followed
+  std::vector<Vec3d> m_points;  ///< the points the integrals were computed on
 };
 
 }  // namespace stroma

@@ -70,4 +70,29 @@ bool computeMeshMass(Base& owner, const Topology& topology, std::span<const Vec3
   return true;
 }
 
+void removeTetrahedronMasses(const TopologyChange& change, std::span<const Vec3d> points,
+                             Eigen::SparseMatrix<double, Eigen::RowMajor>* matrix,
+                             Eigen::VectorXd& lumped, double& measure) {
+  for (const Tetrahedron& t : change.tetrahedra.removedElements) {
+    const Eigen::Matrix4d m =
+        tetrahedronMassMatrix(points[t[0]], points[t[1]], points[t[2]], points[t[3]]);
+    for (int i = 0; i < 4; ++i) {
+      lumped[t[i]] -= m.row(i).sum();
+      if (matrix)
+        for (int j = 0; j < 4; ++j) matrix->coeffRef(t[i], t[j]) -= m(i, j);
+    }
+    measure -= m.sum();
+  }
+  // Exact zeros where nothing is left.
+  for (Index p : change.freedPoints) {
+    lumped[p] = 0;
+    if (!matrix) continue;
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(*matrix, p); it; ++it) {
+      matrix->coeffRef(it.col(), p) = 0;
+      it.valueRef() = 0;
+    }
+  }
+  if (change.tetrahedra.sizeAfter == 0) measure = 0;
+}
+
 }  // namespace stroma

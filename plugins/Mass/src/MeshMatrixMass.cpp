@@ -35,12 +35,25 @@ bool MeshMatrixMass::compute() {
                                ? rest
                                : state->readCoord(VecId::position());
   if (!computeMeshMass(*this, *m_topology, points, m_mesh)) return false;
+  m_points.clear();
+  if (m_mesh.elements == "tetrahedra") m_points.assign(points.begin(), points.end());
   m_topologyRevision = m_topology->revision();
   return true;
 }
 
 void MeshMatrixMass::refresh() {
-  if (m_topology && m_topology->revision() != m_topologyRevision) compute();
+  if (!m_topology) return;
+  const std::uint64_t now = m_topology->revision();
+  if (now == m_topologyRevision) return;
+  const auto changes =
+      m_points.empty() ? std::nullopt : m_topology->changesSince(m_topologyRevision);
+  if (!changes) {
+    compute();
+    return;
+  }
+  for (const TopologyChange& change : *changes)
+    removeTetrahedronMasses(change, m_points, &m_mesh.matrix, m_mesh.lumped, m_mesh.measure);
+  m_topologyRevision = now;
 }
 
 double MeshMatrixMass::density() const {
@@ -65,6 +78,7 @@ double MeshMatrixMass::potentialEnergy(const MechanicalParams&, const VecCoord& 
 }
 
 void MeshMatrixMass::addMDx(VecDeriv& f, const VecDeriv& dx, double factor) {
+  refresh();
   const double s = factor * density();
   const auto n = std::min(f.size(), static_cast<std::size_t>(m_mesh.lumped.size()));
   if (d_lumping.value()) {
@@ -87,6 +101,7 @@ void MeshMatrixMass::addMDx(VecDeriv& f, const VecDeriv& dx, double factor) {
 }
 
 void MeshMatrixMass::accFromF(VecDeriv& a, const VecDeriv& f) {
+  refresh();
   // Only exact when lumped (isDiagonal()); solvers ask for it only then. Otherwise the lumped
   // diagonal is the best diagonal stand-in, used with a warning.
   if (!d_lumping.value() && !m_reportedConsistentDivision) {
@@ -105,6 +120,7 @@ void MeshMatrixMass::accFromF(VecDeriv& a, const VecDeriv& f) {
 }
 
 void MeshMatrixMass::addMToMatrix(MatrixAccumulator& matrix, std::size_t offset, double factor) {
+  refresh();
   const double s = factor * density();
   if (d_lumping.value()) {
     for (Eigen::Index i = 0; i < m_mesh.lumped.size(); ++i)

@@ -20,7 +20,10 @@ namespace stroma {
 ///
 /// The unit-density matrix is computed at init (and again when the topology changes); the
 /// density is read at every use, so changing massDensity or totalMass takes effect at the next
-/// step. Changing `lumping` too.
+/// step. Changing `lumping` too. When tetrahedra are removed at run time (cutting,
+/// Topology::removeTetrahedra), their element matrices are subtracted, on the points the matrix
+/// was computed on (cost proportional to the removal; the sparsity pattern stays, with zeros);
+/// a point left without elements has no mass.
 class MeshMatrixMass final : public Mass<Vec3Types> {
  public:
   Data<double> d_massDensity{this,
@@ -54,8 +57,11 @@ class MeshMatrixMass final : public Mass<Vec3Types> {
 
   /// The density in use now (massDensity, or totalMass over the measure).
   double density() const;
-  /// The mass matrix of unit density (scalar, nbPoints x nbPoints).
-  const MeshMassMatrix& unitMass() const { return m_mesh; }
+  /// The mass matrix of unit density (scalar, nbPoints x nbPoints), up to date with the topology.
+  const MeshMassMatrix& unitMass() {
+    refresh();
+    return m_mesh;
+  }
 
   void addForce(const MechanicalParams& mp, VecDeriv& f, const VecCoord& x,
                 const VecDeriv& v) override;
@@ -76,6 +82,7 @@ class MeshMatrixMass final : public Mass<Vec3Types> {
   const Topology* m_topology = nullptr;
   std::uint64_t m_topologyRevision = 0;
   MeshMassMatrix m_mesh;
+  std::vector<Vec3d> m_points;  ///< the points the matrix was computed on (tetrahedra only)
   bool m_reportedConsistentDivision = false;
 };
 

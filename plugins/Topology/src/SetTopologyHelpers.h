@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // SOFA's companions of the set containers: the topology modifiers (which change a topology at
 // run time: cutting, refining) and the geometry algorithms (geometric queries and drawing).
-// Stroma accepts them with their attributes so that SOFA scenes load, and they do nothing yet:
-// no Stroma component changes a topology at run time, and drawing is a viewer's job.
+// Stroma accepts them with their attributes so that SOFA scenes load. Only the tetrahedron
+// modifier does something (TetrahedronSetTopologyModifier.h: removing tetrahedra); the other
+// modifiers do nothing yet, and drawing is a viewer's job.
 #pragma once
 
 #include <string>
@@ -12,8 +13,8 @@
 
 namespace stroma {
 
-/// A topology modifier of SOFA (PointSet, EdgeSet, TriangleSet, QuadSet, TetrahedronSet,
-/// HexahedronSet): accepted, does nothing yet.
+/// A topology modifier of SOFA (PointSet, EdgeSet, TriangleSet, QuadSet, HexahedronSet):
+/// accepted, does nothing yet.
 class TopologyModifier final : public Base {
  public:
   Data<bool> d_propagateToDOF{this, "propagateToDOF", true,

@@ -12,8 +12,9 @@ namespace stroma {
 /// What SOFA's topological mappings share: an input topology and an output one, linked as
 /// input="@..." output="@...". At init the mapping computes the output's elements from the
 /// input's, sets them on the output (which then makes its sub-elements and checks them), and
-/// gives the output the input's points when it has none. Topologies do not change at run time
-/// in Stroma yet, so the mapping does nothing after init.
+/// gives the output the input's points when it has none. After init, only
+/// Tetra2TriangleTopologicalMapping follows the input's changes (removed tetrahedra); the others
+/// keep their output as made at init.
 class TopologicalMapping : public Base {
  public:
   Link<Base> l_input{this, "input",

@@ -7,6 +7,7 @@
 #include "SetTopologyContainers.h"
 #include "SetTopologyHelpers.h"
 #include "Tetra2TriangleTopologicalMapping.h"
+#include "TetrahedronSetTopologyModifier.h"
 #include "core/Plugin.h"
 
 namespace {
@@ -28,9 +29,14 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .with<TetrahedronSetTopologyContainer>();
   registry.add("HexahedronSetTopologyContainer", "A mesh of hexahedra, with their quads and edges")
       .with<HexahedronSetTopologyContainer>();
-  for (const char* name : {"PointSetTopologyModifier", "EdgeSetTopologyModifier",
-                           "TriangleSetTopologyModifier", "QuadSetTopologyModifier",
-                           "TetrahedronSetTopologyModifier", "HexahedronSetTopologyModifier"})
+  registry
+      .add("TetrahedronSetTopologyModifier",
+           "Removes tetrahedra at run time (cutting), logging the change for the components "
+           "that follow the topology")
+      .with<TetrahedronSetTopologyModifier>();
+  for (const char* name :
+       {"PointSetTopologyModifier", "EdgeSetTopologyModifier", "TriangleSetTopologyModifier",
+        "QuadSetTopologyModifier", "HexahedronSetTopologyModifier"})
     registry.add(name, "SOFA's topology modifier: accepted, does nothing yet")
         .with<TopologyModifier>();
   const char* geometry =
