@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <string>
 
+#include "Anisotropy/kernels/CorotationalReinforcement.h"
 #include "core/Node.h"
 
 namespace stroma {
@@ -298,10 +299,10 @@ bool TetrahedralFiberReinforcementForceField::readFibers(bool atInit,
 
 std::uint64_t TetrahedralFiberReinforcementForceField::parameterVersion() const {
   // Versions only grow: their sum changes whenever one of them does.
-  return d_fiberDirection.version() + d_fiberDirections.version() + d_youngModulusL.version() +
-         d_youngModulusT.version() + d_poissonRatioLT.version() + d_poissonRatioTT.version() +
-         d_shearModulusLT.version() + d_alpha.version() + d_beta.version() +
-         d_shearModulusL.version() + d_shearModulusT.version();
+  return d_method.version() + d_fiberDirection.version() + d_fiberDirections.version() +
+         d_youngModulusL.version() + d_youngModulusT.version() + d_poissonRatioLT.version() +
+         d_poissonRatioTT.version() + d_shearModulusLT.version() + d_alpha.version() +
+         d_beta.version() + d_shearModulusL.version() + d_shearModulusT.version();
 }
 
 bool TetrahedralFiberReinforcementForceField::build(bool atInit) {
@@ -313,15 +314,16 @@ bool TetrahedralFiberReinforcementForceField::build(bool atInit) {
   m_parameters = *parameters;
   const SpencerParameters& p = m_parameters;
 
-  // Ke = V B^T C_r B of each tetrahedron, C_r about its fiber direction.
-  fem::Matrix6d C =
-      anisotropy::computeReinforcementElasticity(directions[0], p.alpha, p.beta, p.muL, p.muT);
+  // C_r about each fiber direction, and Ke = V B^T C_r B of each tetrahedron (the tangent at
+  // rest of method polar).
+  m_elasticity.resize(directions.size());
+  for (std::size_t i = 0; i < directions.size(); ++i)
+    m_elasticity[i] =
+        anisotropy::computeReinforcementElasticity(directions[i], p.alpha, p.beta, p.muL, p.muT);
   m_stiffness.resize(m_tetrahedra.size());
-  for (std::size_t t = 0; t < m_tetrahedra.size(); ++t) {
-    if (directions.size() > 1)
-      C = anisotropy::computeReinforcementElasticity(directions[t], p.alpha, p.beta, p.muL, p.muT);
-    m_stiffness[t] = fem::computeTetrahedronStiffness(m_shapes[t], C);
-  }
+  for (std::size_t t = 0; t < m_tetrahedra.size(); ++t)
+    m_stiffness[t] = fem::computeTetrahedronStiffness(m_shapes[t], elasticity(t));
+  m_invertedWarnings = 0;
 
   if (m_engineering) {
     const anisotropy::IsotropicConstants iso =
@@ -357,13 +359,18 @@ void TetrahedralFiberReinforcementForceField::compareWithIsotropicNeighbours(boo
     const double E = young[0], nu = poisson[0];
     const std::string who = field->className() + " " + field->path();
 
-    // The reinforcement is small-strain: beside a corotational field, rotations would strain it.
-    if (const BaseData* method = field->findData("method");
-        method && method->valueText() != "small")
-      msgWarning("the isotropic force field " + who + " has method=\"" + method->valueText() +
-                     "\", this reinforcement is small-strain (linear): a rotation of the body "
-                     "gives it spurious forces; use method=\"small\" beside it",
-                 "mstate");
+    // Both small, or both corotational: else a rotation of the body strains one of them.
+    if (const BaseData* method = field->findData("method")) {
+      const bool mineSmall = d_method.value() == FiberMethod::small;
+      const bool theirsSmall = method->valueText() == "small";
+      if (mineSmall != theirsSmall)
+        msgWarning("the isotropic force field " + who + " has method=\"" + method->valueText() +
+                       "\" and this reinforcement method=\"" + d_method.valueText() +
+                       "\": one is linear, the other corotational, so a rotation of the body "
+                       "strains the linear one; use small with small, polar (or large) with a "
+                       "corotational field",
+                   "method");
+    }
 
     if (m_engineering) {
       const anisotropy::IsotropicConstants iso =
@@ -420,6 +427,10 @@ bool TetrahedralFiberReinforcementForceField::refresh() {
 void TetrahedralFiberReinforcementForceField::addForce(const MechanicalParams&, VecDeriv& f,
                                                        const VecCoord& x, const VecDeriv&) {
   if (!mstate() || !refresh()) return;
+  if (d_method.value() != FiberMethod::small) {
+    addCorotationalForce(f, x);
+    return;
+  }
   for (std::size_t t = 0; t < m_tetrahedra.size(); ++t) {
     const Tetrahedron& tet = m_tetrahedra[t];
     Vector12d u;
@@ -454,10 +465,46 @@ void TetrahedralFiberReinforcementForceField::addKToMatrix(const MechanicalParam
   }
 }
 
+void TetrahedralFiberReinforcementForceField::addCorotationalForce(VecDeriv& f, const VecCoord& x) {
+  // Forces and the tangent of each element at x (CorotationalReinforcement.h).
+  std::vector<std::size_t> inverted;
+  for (std::size_t t = 0; t < m_tetrahedra.size(); ++t) {
+    const Tetrahedron& tet = m_tetrahedra[t];
+    fem::TetrahedronVectors xe, fe;
+    for (int i = 0; i < 4; ++i) xe.col(i) = x[tet[i]];
+    double energy = 0;
+    if (anisotropy::computeCorotationalReinforcement(m_shapes[t], elasticity(t), xe, energy, fe,
+                                                     &m_stiffness[t]) !=
+        anisotropy::CorotationalStatus::ok)
+      inverted.push_back(t);
+    for (int i = 0; i < 4; ++i) f[tet[i]] += fe.col(i);
+  }
+  // An inverted element is a numerical outcome, not bad input: said once, with the elements.
+  if (!inverted.empty() && m_invertedWarnings == 0) {
+    ++m_invertedWarnings;
+    msgWarning(std::to_string(inverted.size()) +
+                   " tetrahedra are inverted (the polar rotation has no derivative there; their "
+                   "tangent leaves it out): elements " +
+                   describeIndices(inverted),
+               "method");
+  }
+}
+
 double TetrahedralFiberReinforcementForceField::potentialEnergy(const MechanicalParams&,
                                                                 const VecCoord& x) const {
   if (!m_ready || x.size() != m_pointCount) return 0;
   double energy = 0;
+  if (d_method.value() != FiberMethod::small) {
+    for (std::size_t t = 0; t < m_tetrahedra.size(); ++t) {
+      fem::TetrahedronVectors xe, fe;
+      for (int i = 0; i < 4; ++i) xe.col(i) = x[m_tetrahedra[t][i]];
+      double element = 0;
+      anisotropy::computeCorotationalReinforcement(m_shapes[t], elasticity(t), xe, element, fe,
+                                                   nullptr);
+      energy += element;
+    }
+    return energy;
+  }
   for (std::size_t t = 0; t < m_tetrahedra.size(); ++t) {
     const Tetrahedron& tet = m_tetrahedra[t];
     Vector12d u;

@@ -1,17 +1,30 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include "Anisotropy/kernels/TransverselyIsotropicMaterial.h"
 #include "SolidMechanics/kernels/LinearTetrahedron.h"
+#include "core/DataTraits.h"
 #include "core/StateTypes.h"
 #include "simulation/ForceField.h"
 #include "topology/Topology.h"
 
 namespace stroma {
+
+/// The `method` keyword of TetrahedralFiberReinforcementForceField: small strain, or
+/// corotational with the polar rotation of each element (large is accepted as polar, so that
+/// the reinforcement reads like the corotational isotropic field beside it).
+enum class FiberMethod { small, large, polar };
+
+template <>
+struct EnumKeywords<FiberMethod> {
+  static constexpr std::array<std::string_view, 3> names{"small", "large", "polar"};
+};
 
 /// The anisotropic part of Spencer's transversely isotropic linear elasticity on linear
 /// tetrahedra (TransverselyIsotropicMaterial.h), to be added to an isotropic force field on the
@@ -24,9 +37,12 @@ namespace stroma {
 ///   E_e = V (alpha (tr eps)(a.eps a) + 2 (mu_L - mu_T) a.eps^2 a + beta/2 (a.eps a)^2)
 ///       = 1/2 u^T Ke u,   Ke = V B^T C_r B,   f = -Ke u,   df = -Ke dx.
 ///
-/// Small strain: not rotation invariant (like its isotropic partner with method="small").
-/// Ke is not definite in general (the reinforcement can soften), only the sum with the
-/// isotropic part is.
+/// method="small": linear, not rotation invariant (like its isotropic partner with
+/// method="small"). Ke is not definite in general (the reinforcement can soften), only the sum
+/// with the isotropic part is. method="polar" (or "large"): corotational, the same energy of the
+/// strain S - I in the frame of the polar rotation of each element, F = R S, so that the fibers
+/// turn with the element; forces and tangent are the exact derivatives of that energy, rotation
+/// included (CorotationalReinforcement.h), the tangent recomputed at each addForce.
 ///
 /// The material is given either by the engineering constants of the fiber-reinforced material
 /// (youngModulusL, youngModulusT, poissonRatioLT, poissonRatioTT, shearModulusLT: all five),
@@ -52,6 +68,11 @@ class TetrahedralFiberReinforcementForceField final : public ForceField<Vec3Type
       {},
       "Fiber direction of each tetrahedron (nbTetrahedra x 3, normalized; none zero); when "
       "given, replaces fiberDirection."};
+
+  Data<FiberMethod> d_method{
+      this, "method", FiberMethod::small,
+      "small: linear (small strain); polar: corotational, the strain measured in the polar "
+      "rotation of each element, fibers turning with it (exact tangent); large: as polar."};
 
   Data<double> d_youngModulusL{
       this, "youngModulusL", 0.0, "E_L: Young's modulus along the fiber, > 0.", {.unit = "Pa"}};
@@ -130,7 +151,8 @@ class TetrahedralFiberReinforcementForceField final : public ForceField<Vec3Type
 
   /// The material's parameters (after init; lambda is 0 when given by Spencer's parameters).
   const anisotropy::SpencerParameters& parameters() const { return m_parameters; }
-  /// Ke of each tetrahedron (after init).
+  /// Ke of each tetrahedron (after init); with method polar, the tangent d2E/dx2 at the last
+  /// addForce.
   const std::vector<fem::Matrix12d>& elementStiffness() const { return m_stiffness; }
 
  private:
@@ -141,6 +163,10 @@ class TetrahedralFiberReinforcementForceField final : public ForceField<Vec3Type
   bool refresh();
   void compareWithIsotropicNeighbours(bool atInit);
   std::uint64_t parameterVersion() const;
+  void addCorotationalForce(VecDeriv& f, const VecCoord& x);
+  const fem::Matrix6d& elasticity(std::size_t t) const {
+    return m_elasticity.size() == 1 ? m_elasticity[0] : m_elasticity[t];
+  }
   void report(bool atInit, const std::string& text, const std::string& field);
 
   const Topology* m_topology = nullptr;
@@ -149,7 +175,9 @@ class TetrahedralFiberReinforcementForceField final : public ForceField<Vec3Type
   std::vector<Tetrahedron> m_tetrahedra;
   std::vector<Vec3d> m_restPositions;
   std::vector<fem::TetrahedronShape> m_shapes;  // gradients and volume of each rest tetrahedron
-  std::vector<fem::Matrix12d> m_stiffness;      // Ke of each tetrahedron
+  std::vector<fem::Matrix6d> m_elasticity;      // C_r: one, or one per tetrahedron
+  std::vector<fem::Matrix12d> m_stiffness;      // Ke of each tetrahedron (polar: the tangent)
+  std::size_t m_invertedWarnings = 0;           // polar: inverted elements reported so far
   anisotropy::SpencerParameters m_parameters;
   bool m_engineering = true;  // the material came from the engineering constants
   std::uint64_t m_parameterVersion = 0;

@@ -51,6 +51,49 @@ TEST(TetrahedralFiberReinforcementForceField, PassesTheForceFieldTestBesideItsIs
                   {.forceField = "/root/body/fibers", .hasEnergy = true});
 }
 
+/// fiberField with method="polar".
+std::string polarField(const Vec3d& direction, const std::vector<Vec3d>& directions = {}) {
+  std::string field = fiberField(kTissue, direction, directions);
+  return field.insert(field.size() - 2, " method=\"polar\"");
+}
+
+TEST(TetrahedralFiberReinforcementForceField, PolarPassesTheForceFieldTestRotationInvariant) {
+  // Corotational: the exact gradient and Hessian of the energy, rotation included
+  // (CorotationalReinforcement.h), so the default tolerances hold, with rigid motions too.
+  const FemMesh mesh = makeRandomTetrahedralMesh();
+  for (bool perElement : {false, true}) {
+    SCOPED_TRACE(perElement ? "per element" : "per object");
+    const std::string field =
+        perElement ? polarField(Vec3d::UnitX(), randomDirections(mesh.tetrahedra.size(), 12))
+                   : polarField(Vec3d(1, 2, 0.5));
+    const ForceFieldTestReport r = checkForceField(
+        tensorMassScene(mesh, field), {.hasEnergy = true, .rotationInvariant = true});
+    std::printf("[ polar    ] %s", r.describe().c_str());
+  }
+}
+
+TEST(TetrahedralFiberReinforcementForceField, PolarForcesTurnWithTheDeformedBody) {
+  // Rest shape and fibers unchanged, the deformed body rotated by Q: forces Q f, same energy;
+  // the small-strain method sees the rotation as a strain.
+  const FemMesh mesh = makeRandomTetrahedralMesh();
+  const std::vector<Vec3d> x =
+      displaced(mesh.points, randomDisplacements(mesh.points.size(), 0.02));
+  const Eigen::Matrix3d Q =
+      Eigen::AngleAxisd(1.4, Vec3d(0.5, 1, -1).normalized()).toRotationMatrix();
+  const std::string scene = tensorMassScene(mesh, polarField(Vec3d(1, 1, 0)));
+  const Eigen::VectorXd f = forcesAt(scene, x);
+  const Eigen::VectorXd g = forcesAt(scene, rotated(x, Q));
+  Eigen::VectorXd expected(f.size());
+  for (Eigen::Index i = 0; i < f.size(); i += 3) expected.segment<3>(i) = Q * f.segment<3>(i);
+  EXPECT_LT(relativeDifference(g, expected), 1e-12);
+  // At small displacements polar is the small-strain method, to first order.
+  const std::vector<Vec3d> nearRest =
+      displaced(mesh.points, randomDisplacements(mesh.points.size(), 1e-5));
+  const Eigen::VectorXd linear =
+      forcesAt(tensorMassScene(mesh, fiberField(kTissue, Vec3d(1, 1, 0))), nearRest);
+  EXPECT_LT(relativeDifference(forcesAt(scene, nearRest), linear), 1e-3);
+}
+
 TEST(TetrahedralFiberReinforcementForceField, UniformStrainHasTheEnergyOfTheFormula) {
   // u = eps X: every tetrahedron has the strain eps, the energy is the mesh volume times
   // alpha (tr eps)(a.eps a) + 2 (mu_L - mu_T) a.eps^2 a + beta/2 (a.eps a)^2.
