@@ -396,15 +396,19 @@ void TetrahedralFiberReinforcementForceField::compareWithIsotropicNeighbours(boo
       total.lambda = lambda;
       const Eigen::SelfAdjointEigenSolver<fem::Matrix6d> eigen(
           anisotropy::computeTransverselyIsotropicElasticity(Vec3d::UnitX(), total));
-      if (!(eigen.eigenvalues().minCoeff() > 0))
+      if (!(eigen.eigenvalues().minCoeff() > 0)) {
         report(atInit,
                "with the isotropic part of " + who + " (lambda = " + number(lambda) +
                    " Pa), the material is not positive definite (smallest eigenvalue of its "
                    "elasticity " +
                    number(eigen.eigenvalues().minCoeff()) +
-                   " Pa): change alpha, beta or "
-                   "shearModulusL",
+                   " Pa): change alpha, beta or shearModulusL",
                "beta");
+        if (atInit) {
+          m_ready = false;
+          setInvalid();
+        }
+      }
     }
   }
   if (!found)

@@ -66,8 +66,8 @@ TEST(TetrahedralFiberReinforcementForceField, PolarPassesTheForceFieldTestRotati
     const std::string field =
         perElement ? polarField(Vec3d::UnitX(), randomDirections(mesh.tetrahedra.size(), 12))
                    : polarField(Vec3d(1, 2, 0.5));
-    const ForceFieldTestReport r = checkForceField(
-        tensorMassScene(mesh, field), {.hasEnergy = true, .rotationInvariant = true});
+    const ForceFieldTestReport r = checkForceField(tensorMassScene(mesh, field),
+                                                   {.hasEnergy = true, .rotationInvariant = true});
     std::printf("[ polar    ] %s", r.describe().c_str());
   }
 }
@@ -224,6 +224,46 @@ TEST(TetrahedralFiberReinforcementForceField, WarnsWhenTheIsotropicFieldBesideDo
                                        "<TetrahedralTensorMassForceField "
                                        "youngModulus=\"@fibers.isotropicYoungModulus\" "
                                        "poissonRatio=\"@fibers.isotropicPoissonRatio\"/>")));
+}
+
+TEST(TetrahedralFiberReinforcementForceField, SpencerParametersAreCheckedAgainstThePartner) {
+  // Spencer's parameters do not give lambda: the partner's does. Its shear modulus must be
+  // shearModulusT (else a warning), and the sum positive definite (else an error).
+  const FemMesh mesh = makeRandomTetrahedralMesh();
+  const std::string partner =
+      "<TetrahedronFEMForceField method=\"small\" youngModulus=\"3000\" poissonRatio=\"0.4\"/>";
+  auto load = [&](const std::string& spencer, Scene& scene) {
+    return scene.loadString(tensorMassScene(
+        mesh,
+        "<TetrahedralFiberReinforcementForceField name=\"fibers\" " + spencer + "/>" + partner));
+  };
+  auto has = [](Scene& scene, MessageLevel level, const char* field, const char* text) {
+    for (const Message& m : scene.log().messages())
+      if (m.level == level && m.field == field && m.text.find(text) != std::string::npos)
+        return true;
+    return false;
+  };
+  {
+    Runtime runtime;
+    Scene scene(runtime);
+    // mu_T = 3000 / 2.8 = 1071.43 Pa; a beta of -1e5 Pa makes the fiber direction unstable.
+    EXPECT_FALSE(load("alpha=\"0\" beta=\"-1e5\" shearModulusL=\"2000\" "
+                      "shearModulusT=\"1071.4285714285713\"",
+                      scene) &&
+                 scene.log().errorCount() == 0);
+    EXPECT_TRUE(has(scene, MessageLevel::error, "beta", "not positive definite"))
+        << describe(scene.log());
+    scene.step();
+  }
+  {
+    Runtime runtime;
+    Scene scene(runtime);
+    EXPECT_TRUE(
+        load("alpha=\"100\" beta=\"1000\" shearModulusL=\"2000\" shearModulusT=\"900\"", scene));
+    EXPECT_EQ(scene.log().errorCount(), 0u) << describe(scene.log());
+    EXPECT_TRUE(has(scene, MessageLevel::warning, "shearModulusT", "1071.43"))
+        << describe(scene.log());
+  }
 }
 
 // --- Bad input -----------------------------------------------------------------------------
