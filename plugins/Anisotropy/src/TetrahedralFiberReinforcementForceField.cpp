@@ -7,10 +7,12 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <span>
 #include <string>
 
 #include "Anisotropy/kernels/CorotationalReinforcement.h"
 #include "core/Node.h"
+#include "topology/TopologyChange.h"
 
 namespace stroma {
 
@@ -417,11 +419,34 @@ void TetrahedralFiberReinforcementForceField::compareWithIsotropicNeighbours(boo
         "component adds only the anisotropic part of the material");
 }
 
+bool TetrahedralFiberReinforcementForceField::followRemovals() {
+  if (!m_ready || mstate()->size() != m_pointCount) return false;
+  const auto changes = m_topology->changesSince(m_topologyRevision);
+  if (!changes || changes->empty() || changes->front().tetrahedra.sizeBefore != m_tetrahedra.size())
+    return false;
+  // Replay SOFA's renumbering on everything kept per tetrahedron (TopologyChange.h), the
+  // per-element fiber directions included: cost proportional to what was removed.
+  std::vector<Vec3d>* directions =
+      d_fiberDirections.value().empty() ? nullptr : &d_fiberDirections.edit();
+  for (const TopologyChange& change : *changes) {
+    const std::span<const Index> removed = change.tetrahedra.removed;
+    applyRemoval(m_tetrahedra, removed);
+    applyRemoval(m_shapes, removed);
+    applyRemoval(m_stiffness, removed);
+    if (m_elasticity.size() > 1) applyRemoval(m_elasticity, removed);
+    if (directions) applyRemoval(*directions, removed);
+  }
+  m_topologyRevision = m_topology->revision();
+  m_parameterVersion = parameterVersion();  // the directions followed the mesh: nothing to redo
+  return m_tetrahedra.size() == m_topology->tetrahedra().size();
+}
+
 bool TetrahedralFiberReinforcementForceField::refresh() {
   if (m_topology &&
       (m_topology->revision() != m_topologyRevision || mstate()->size() != m_pointCount)) {
-    // The mesh changed: start again (allocates, as a topological change does).
-    m_ready = readMesh() && build(true);
+    // Tetrahedra removed: follow; any other change of the mesh: start again (allocates, as a
+    // topological change does).
+    if (!followRemovals()) m_ready = readMesh() && build(true);
   } else if (m_ready && parameterVersion() != m_parameterVersion) {
     build(false);  // an invalid change keeps the previous element matrices
   }

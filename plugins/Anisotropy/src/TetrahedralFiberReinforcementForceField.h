@@ -56,8 +56,10 @@ struct EnumKeywords<FiberMethod> {
 /// material that is not positive definite, a zero fiber direction, a per-element list whose
 /// size is not the number of tetrahedra, no tetrahedra, flat rest tetrahedra. Changes of the
 /// parameters or fiber directions while running take effect at the next addForce (an invalid
-/// change is a warning and the previous values stay); a change of the topology's elements or of
-/// the state's size rebuilds everything.
+/// change is a warning and the previous values stay). Tetrahedra removed by the topology
+/// (cutting, Topology::removeTetrahedra) are followed incrementally: the element data and
+/// fiberDirections are renumbered as the topology's (TopologyChange.h); any other change of the
+/// elements or of the state's size rebuilds everything.
 class TetrahedralFiberReinforcementForceField final : public ForceField<Vec3Types> {
  public:
   Data<Vec3d> d_fiberDirection{this, "fiberDirection", Vec3d(1, 0, 0),
@@ -161,6 +163,7 @@ class TetrahedralFiberReinforcementForceField final : public ForceField<Vec3Type
   bool readFibers(bool atInit, std::vector<Vec3d>& directions);
   bool build(bool atInit);
   bool refresh();
+  bool followRemovals();
   void compareWithIsotropicNeighbours(bool atInit);
   std::uint64_t parameterVersion() const;
   void addCorotationalForce(VecDeriv& f, const VecCoord& x);
