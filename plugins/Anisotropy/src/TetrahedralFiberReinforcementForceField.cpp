@@ -453,6 +453,26 @@ bool TetrahedralFiberReinforcementForceField::refresh() {
   return m_ready;
 }
 
+template <class Element>
+void TetrahedralFiberReinforcementForceField::computeElements(const Element& element) {
+  // Each element writes its own slot; the sums per point come after, in a fixed order, so
+  // that results do not depend on the thread count. One captured reference: the std::function
+  // of parallelFor holds the lambda in place (no allocation in the step).
+  m_elementForces.resize(m_tetrahedra.size());
+  auto range = [&element](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t) element(t);
+  };
+  if (node())
+    node()->threadPool().parallelFor(m_tetrahedra.size(), kGrain, range);
+  else
+    range(0, m_tetrahedra.size());
+}
+
+void TetrahedralFiberReinforcementForceField::addElementForces(VecDeriv& f) const {
+  for (std::size_t t = 0; t < m_tetrahedra.size(); ++t)
+    for (int i = 0; i < 4; ++i) f[m_tetrahedra[t][i]] += m_elementForces[t].col(i);
+}
+
 void TetrahedralFiberReinforcementForceField::addForce(const MechanicalParams&, VecDeriv& f,
                                                        const VecCoord& x, const VecDeriv&) {
   if (!mstate() || !refresh()) return;
@@ -460,25 +480,28 @@ void TetrahedralFiberReinforcementForceField::addForce(const MechanicalParams&, 
     addCorotationalForce(f, x);
     return;
   }
-  for (std::size_t t = 0; t < m_tetrahedra.size(); ++t) {
+  // f_e = -Ke (x_e - X_e).
+  computeElements([this, &x](std::size_t t) {
     const Tetrahedron& tet = m_tetrahedra[t];
     Vector12d u;
     for (int i = 0; i < 4; ++i) u.segment<3>(3 * i) = x[tet[i]] - m_restPositions[tet[i]];
-    const Vector12d fe = m_stiffness[t] * u;
-    for (int i = 0; i < 4; ++i) f[tet[i]] -= fe.segment<3>(3 * i);
-  }
+    Eigen::Map<Vector12d>(m_elementForces[t].data()).noalias() = -m_stiffness[t] * u;
+  });
+  addElementForces(f);
 }
 
 void TetrahedralFiberReinforcementForceField::addDForce(const MechanicalParams& mp, VecDeriv& df,
                                                         const VecDeriv& dx) {
   if (!m_ready || mp.kFactor == 0) return;
-  for (std::size_t t = 0; t < m_tetrahedra.size(); ++t) {
+  // df_e = -kFactor Ke dx_e (Ke: the tangent of the last addForce with method polar).
+  const double factor = -mp.kFactor;
+  computeElements([this, &dx, factor](std::size_t t) {
     const Tetrahedron& tet = m_tetrahedra[t];
     Vector12d d;
     for (int i = 0; i < 4; ++i) d.segment<3>(3 * i) = dx[tet[i]];
-    const Vector12d dfe = m_stiffness[t] * d;
-    for (int i = 0; i < 4; ++i) df[tet[i]] -= mp.kFactor * dfe.segment<3>(3 * i);
-  }
+    Eigen::Map<Vector12d>(m_elementForces[t].data()).noalias() = factor * (m_stiffness[t] * d);
+  });
+  addElementForces(df);
 }
 
 void TetrahedralFiberReinforcementForceField::addKToMatrix(const MechanicalParams& mp,
@@ -496,18 +519,20 @@ void TetrahedralFiberReinforcementForceField::addKToMatrix(const MechanicalParam
 
 void TetrahedralFiberReinforcementForceField::addCorotationalForce(VecDeriv& f, const VecCoord& x) {
   // Forces and the tangent of each element at x (CorotationalReinforcement.h).
-  std::vector<std::size_t> inverted;
-  for (std::size_t t = 0; t < m_tetrahedra.size(); ++t) {
+  m_elementInverted.resize(m_tetrahedra.size());
+  computeElements([this, &x](std::size_t t) {
     const Tetrahedron& tet = m_tetrahedra[t];
-    fem::TetrahedronVectors xe, fe;
+    fem::TetrahedronVectors xe;
     for (int i = 0; i < 4; ++i) xe.col(i) = x[tet[i]];
     double energy = 0;
-    if (anisotropy::computeCorotationalReinforcement(m_shapes[t], elasticity(t), xe, energy, fe,
-                                                     &m_stiffness[t]) !=
-        anisotropy::CorotationalStatus::ok)
-      inverted.push_back(t);
-    for (int i = 0; i < 4; ++i) f[tet[i]] += fe.col(i);
-  }
+    m_elementInverted[t] = anisotropy::computeCorotationalReinforcement(
+                               m_shapes[t], elasticity(t), xe, energy, m_elementForces[t],
+                               &m_stiffness[t]) != anisotropy::CorotationalStatus::ok;
+  });
+  addElementForces(f);
+  std::vector<std::size_t> inverted;
+  for (std::size_t t = 0; t < m_tetrahedra.size(); ++t)
+    if (m_elementInverted[t]) inverted.push_back(t);
   // An inverted element is a numerical outcome, not bad input: said once, with the elements.
   if (!inverted.empty() && m_invertedWarnings == 0) {
     ++m_invertedWarnings;

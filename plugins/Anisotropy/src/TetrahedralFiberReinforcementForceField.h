@@ -167,6 +167,12 @@ class TetrahedralFiberReinforcementForceField final : public ForceField<Vec3Type
   void compareWithIsotropicNeighbours(bool atInit);
   std::uint64_t parameterVersion() const;
   void addCorotationalForce(VecDeriv& f, const VecCoord& x);
+  /// Calls element(t) for every tetrahedron, in parallel on the scene's threads.
+  template <class Element>
+  void computeElements(const Element& element);
+  /// f += m_elementForces, summed per point in element order.
+  void addElementForces(VecDeriv& f) const;
+  static constexpr std::size_t kGrain = 128;
   const fem::Matrix6d& elasticity(std::size_t t) const {
     return m_elasticity.size() == 1 ? m_elasticity[0] : m_elasticity[t];
   }
@@ -180,7 +186,9 @@ class TetrahedralFiberReinforcementForceField final : public ForceField<Vec3Type
   std::vector<fem::TetrahedronShape> m_shapes;  // gradients and volume of each rest tetrahedron
   std::vector<fem::Matrix6d> m_elasticity;      // C_r: one, or one per tetrahedron
   std::vector<fem::Matrix12d> m_stiffness;      // Ke of each tetrahedron (polar: the tangent)
-  std::size_t m_invertedWarnings = 0;           // polar: inverted elements reported so far
+  std::vector<fem::TetrahedronVectors> m_elementForces;  // scratch: per-element results
+  std::vector<char> m_elementInverted;                   // scratch (polar)
+  std::size_t m_invertedWarnings = 0;                    // polar: inverted elements reported so far
   anisotropy::SpencerParameters m_parameters;
   bool m_engineering = true;  // the material came from the engineering constants
   std::uint64_t m_parameterVersion = 0;
