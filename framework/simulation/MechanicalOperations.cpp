@@ -263,7 +263,7 @@ bool MechanicalOperations::checkFinite(VecId v, const std::string& what, Base& r
   for (const BaseMechanicalState* s : m_independent) {
     std::size_t where = 0;
     if (std::isfinite(s->vMaxAbs(v, where))) continue;
-    reporter.msgError("the simulation diverged at time " + std::to_string(time()) + ": " + what +
+    reporter.msgError("the simulation diverged at time " + std::to_string(endTime()) + ": " + what +
                       " of " + s->path() + " is not finite at index " + std::to_string(where));
     return false;
   }

@@ -87,8 +87,8 @@ class MechanicalOperations {
   double potentialEnergy(const MechanicalParams& mp) const;
   double kineticEnergy() const;
 
-  /// Reports NaN or infinity in `v` as an error of `reporter` (with the state and the
-  /// degree of freedom) and returns false.
+  /// Reports NaN or infinity in `v` as an error of `reporter` (with the state, the degree of
+  /// freedom and the time at the end of the step, endTime()) and returns false.
   bool checkFinite(VecId v, const std::string& what, Base& reporter) const;
 
  private:
