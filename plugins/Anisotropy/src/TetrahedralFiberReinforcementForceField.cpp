@@ -2,15 +2,12 @@
 #include "TetrahedralFiberReinforcementForceField.h"
 
 #include <Eigen/Eigenvalues>
-#include <algorithm>
-#include <cctype>
-#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <span>
 #include <string>
 
 #include "Anisotropy/kernels/CorotationalReinforcement.h"
+#include "FiberReinforcementInput.h"
 #include "core/Node.h"
 #include "topology/TopologyChange.h"
 
@@ -21,61 +18,9 @@ namespace {
 using anisotropy::ConstantsStatus;
 using anisotropy::EngineeringConstants;
 using anisotropy::SpencerParameters;
+using reinforcement::describeElements;
+using reinforcement::formatNumber;
 using Vector12d = fem::ElementVector<4>;
-
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
-}
-
-/// "3, 17, 42" or "3, 17, 42, ... (12 in all)": element indices for messages, the first 10.
-std::string describeIndices(const std::vector<std::size_t>& indices) {
-  constexpr std::size_t kShown = 10;
-  std::string text;
-  for (std::size_t i = 0; i < indices.size() && i < kShown; ++i)
-    text += (i ? ", " : "") + std::to_string(indices[i]);
-  if (indices.size() > kShown) text += ", ... (" + std::to_string(indices.size()) + " in all)";
-  return text;
-}
-
-/// The numbers of a Data's text ("3000", "3000 2000"), or fewer when one does not parse.
-std::vector<double> parseNumbers(const std::string& text) {
-  std::vector<double> numbers;
-  const char* p = text.data();
-  const char* end = p + text.size();
-  while (p < end) {
-    while (p < end && std::isspace(static_cast<unsigned char>(*p))) ++p;
-    if (p == end) break;
-    double value = 0;
-    const auto [next, error] = std::from_chars(p, end, value);
-    if (error != std::errc()) break;
-    numbers.push_back(value);
-    p = next;
-  }
-  return numbers;
-}
-
-const Topology* findTetrahedralTopology(Base& owner, const Link<Topology>& link) {
-  if (link) {
-    if (link->tetrahedra().empty()) {
-      owner.msgError("the topology " + link->path() + " has no tetrahedra", "topology");
-      return nullptr;
-    }
-    return link.get();
-  }
-  for (const Node* node = owner.node(); node; node = node->parent()) {
-    const Topology* found = nullptr;
-    for (const Topology* topology : node->getAll<Topology>())
-      if (!topology->tetrahedra().empty()) found = topology;
-    if (found) return found;
-  }
-  owner.msgError(
-      "needs a topology with tetrahedra (TetrahedronSetTopologyContainer, MeshTopology, or a "
-      "grid through Hexa2TetraTopologicalMapping) in its node or above, or a 'topology' link",
-      "topology");
-  return nullptr;
-}
 
 constexpr const char* kEngineeringNames =
     "youngModulusL, youngModulusT, poissonRatioLT, poissonRatioTT, shearModulusLT";
@@ -107,7 +52,7 @@ void TetrahedralFiberReinforcementForceField::report(bool atInit, const std::str
 }
 
 bool TetrahedralFiberReinforcementForceField::readMesh() {
-  m_topology = findTetrahedralTopology(*this, l_topology);
+  m_topology = reinforcement::findTetrahedralTopology(*this, l_topology);
   if (!m_topology) return false;
   m_tetrahedra = m_topology->tetrahedra();
   m_topologyRevision = m_topology->revision();
@@ -121,36 +66,7 @@ bool TetrahedralFiberReinforcementForceField::readMesh() {
     return false;
   }
   // The rest shape of each tetrahedron; both orientations work (Ke uses |V|).
-  std::vector<std::size_t> outOfRange, flat;
-  m_shapes.assign(m_tetrahedra.size(), {});
-  for (std::size_t t = 0; t < m_tetrahedra.size(); ++t) {
-    fem::TetrahedronVectors rest;
-    bool inRange = true;
-    for (int i = 0; i < 4; ++i) {
-      const Index p = m_tetrahedra[t][i];
-      if (p >= m_pointCount) {
-        inRange = false;
-        break;
-      }
-      rest.col(i) = m_restPositions[p];
-    }
-    if (!inRange)
-      outOfRange.push_back(t);
-    else if (fem::computeTetrahedronShape(rest, m_shapes[t]) != fem::ElementStatus::ok)
-      flat.push_back(t);
-  }
-  const std::string where = " of " + m_topology->path();
-  if (!outOfRange.empty())
-    msgError(std::to_string(outOfRange.size()) + " tetrahedra" + where +
-                 " use points out of range of the " + std::to_string(m_pointCount) +
-                 " points of the mechanical state: elements " + describeIndices(outOfRange),
-             "topology");
-  if (!flat.empty())
-    msgError(std::to_string(flat.size()) + " tetrahedra" + where +
-                 " are flat in the rest shape (zero volume, or non-finite positions): elements " +
-                 describeIndices(flat),
-             "topology");
-  return outOfRange.empty() && flat.empty();
+  return reinforcement::computeRestShapes(*this, *m_topology, m_restPositions, m_shapes);
 }
 
 std::optional<SpencerParameters> TetrahedralFiberReinforcementForceField::readMaterial(
@@ -200,7 +116,7 @@ std::optional<SpencerParameters> TetrahedralFiberReinforcementForceField::readMa
     m_engineering = false;
     for (const Data<double>* d : {&d_shearModulusL, &d_shearModulusT})
       if (!(d->value() > 0)) {
-        report(atInit, "expected a shear modulus > 0, got " + number(d->value()), d->name());
+        report(atInit, "expected a shear modulus > 0, got " + formatNumber(d->value()), d->name());
         return std::nullopt;
       }
     return SpencerParameters{.lambda = 0,
@@ -220,27 +136,27 @@ std::optional<SpencerParameters> TetrahedralFiberReinforcementForceField::readMa
     case ConstantsStatus::ok:
       break;
     case ConstantsStatus::youngModulusL:
-      report(atInit, "expected E_L > 0, got " + number(c.youngModulusL), "youngModulusL");
+      report(atInit, "expected E_L > 0, got " + formatNumber(c.youngModulusL), "youngModulusL");
       return std::nullopt;
     case ConstantsStatus::youngModulusT:
-      report(atInit, "expected E_T > 0, got " + number(c.youngModulusT), "youngModulusT");
+      report(atInit, "expected E_T > 0, got " + formatNumber(c.youngModulusT), "youngModulusT");
       return std::nullopt;
     case ConstantsStatus::shearModulusLT:
-      report(atInit, "expected G_LT > 0, got " + number(c.shearModulusLT), "shearModulusLT");
+      report(atInit, "expected G_LT > 0, got " + formatNumber(c.shearModulusLT), "shearModulusLT");
       return std::nullopt;
     case ConstantsStatus::poissonRatioTT:
       report(atInit,
              "expected -1 < poissonRatioTT < 1 (the material is not positive definite "
              "otherwise), got " +
-                 number(c.poissonRatioTT),
+                 formatNumber(c.poissonRatioTT),
              "poissonRatioTT");
       return std::nullopt;
     case ConstantsStatus::poissonRatioLT:
       report(atInit,
              "the compliance is not positive definite: expected poissonRatioLT^2 < "
              "(1 - poissonRatioTT) youngModulusL / (2 youngModulusT) = " +
-                 number((1 - c.poissonRatioTT) * c.youngModulusL / (2 * c.youngModulusT)) +
-                 ", got poissonRatioLT = " + number(c.poissonRatioLT),
+                 formatNumber((1 - c.poissonRatioTT) * c.youngModulusL / (2 * c.youngModulusT)) +
+                 ", got poissonRatioLT = " + formatNumber(c.poissonRatioLT),
              "poissonRatioLT");
       return std::nullopt;
   }
@@ -251,7 +167,7 @@ std::optional<SpencerParameters> TetrahedralFiberReinforcementForceField::readMa
            "the isotropic part of this material has no positive bulk modulus (no youngModulus "
            "and poissonRatio in (-1, 0.5) give it): expected 1 + 2 poissonRatioTT + "
            "poissonRatioLT^2 youngModulusT / youngModulusL > 0, got poissonRatioTT = " +
-               number(c.poissonRatioTT),
+               formatNumber(c.poissonRatioTT),
            "poissonRatioTT");
     return std::nullopt;
   }
@@ -265,8 +181,8 @@ bool TetrahedralFiberReinforcementForceField::readFibers(bool atInit,
     const Vec3d a = d_fiberDirection.value();
     if (!(a.norm() > 0) || !a.allFinite()) {
       report(atInit,
-             "expected a non-zero direction, got " + number(a.x()) + " " + number(a.y()) + " " +
-                 number(a.z()),
+             "expected a non-zero direction, got " + formatNumber(a.x()) + " " +
+                 formatNumber(a.y()) + " " + formatNumber(a.z()),
              "fiberDirection");
       return false;
     }
@@ -292,7 +208,7 @@ bool TetrahedralFiberReinforcementForceField::readFibers(bool atInit,
   if (!zero.empty()) {
     report(atInit,
            "expected non-zero directions; zero for " + std::to_string(zero.size()) +
-               " tetrahedra: elements " + describeIndices(zero),
+               " tetrahedra: elements " + describeElements(zero),
            "fiberDirections");
     return false;
   }
@@ -332,12 +248,12 @@ bool TetrahedralFiberReinforcementForceField::build(bool atInit) {
         anisotropy::computeIsotropicConstants(p.lambda, p.muT);
     d_isotropicYoungModulus.setValue(iso.youngModulus);
     d_isotropicPoissonRatio.setValue(iso.poissonRatio);
-    msgInfo("transversely isotropic material lambda = " + number(p.lambda) +
-            " Pa, mu_T = " + number(p.muT) + " Pa, alpha = " + number(p.alpha) +
-            " Pa, beta = " + number(p.beta) + " Pa, mu_L = " + number(p.muL) +
+    msgInfo("transversely isotropic material lambda = " + formatNumber(p.lambda) +
+            " Pa, mu_T = " + formatNumber(p.muT) + " Pa, alpha = " + formatNumber(p.alpha) +
+            " Pa, beta = " + formatNumber(p.beta) + " Pa, mu_L = " + formatNumber(p.muL) +
             " Pa: this component adds the alpha, beta and mu_L - mu_T terms; give the isotropic "
             "force field beside it youngModulus=\"" +
-            number(iso.youngModulus) + "\" poissonRatio=\"" + number(iso.poissonRatio) +
+            formatNumber(iso.youngModulus) + "\" poissonRatio=\"" + formatNumber(iso.poissonRatio) +
             "\" (or link them to @" + name() + ".isotropicYoungModulus and @" + name() +
             ".isotropicPoissonRatio)");
   }
@@ -347,22 +263,15 @@ bool TetrahedralFiberReinforcementForceField::build(bool atInit) {
 void TetrahedralFiberReinforcementForceField::compareWithIsotropicNeighbours(bool atInit) {
   if (!node()) return;
   bool found = false;
-  for (BaseForceField* field : node()->getAll<BaseForceField>()) {
-    if (field == this) continue;
-    const auto states = field->states();
-    if (std::find(states.begin(), states.end(), mstate()) == states.end()) continue;
-    const BaseData* youngData = field->findData("youngModulus");
-    const BaseData* poissonData = field->findData("poissonRatio");
-    if (!youngData || !poissonData) continue;
-    const std::vector<double> young = parseNumbers(youngData->valueText());
-    const std::vector<double> poisson = parseNumbers(poissonData->valueText());
-    if (young.size() != 1 || poisson.size() != 1) continue;  // per-element moduli: not checked
+  for (const reinforcement::IsotropicPartner& partner :
+       reinforcement::findIsotropicPartners(*node(), *this, mstate())) {
     found = true;
-    const double E = young[0], nu = poisson[0];
+    const BaseForceField* field = partner.field;
+    const double E = partner.youngModulus, nu = partner.poissonRatio;
     const std::string who = field->className() + " " + field->path();
 
     // Both small, or both corotational: else a rotation of the body strains one of them.
-    if (const BaseData* method = field->findData("method")) {
+    if (const BaseData* method = partner.method) {
       const bool mineSmall = d_method.value() == FiberMethod::small;
       const bool theirsSmall = method->valueText() == "small";
       if (mineSmall != theirsSmall)
@@ -379,19 +288,19 @@ void TetrahedralFiberReinforcementForceField::compareWithIsotropicNeighbours(boo
           anisotropy::computeIsotropicConstants(m_parameters.lambda, m_parameters.muT);
       if (std::abs(E - iso.youngModulus) > 1e-3 * iso.youngModulus ||
           std::abs(nu - iso.poissonRatio) > 1e-3)
-        msgWarning("the isotropic force field " + who + " has youngModulus=" + number(E) +
-                       " poissonRatio=" + number(nu) +
+        msgWarning("the isotropic force field " + who + " has youngModulus=" + formatNumber(E) +
+                       " poissonRatio=" + formatNumber(nu) +
                        "; with these engineering constants the isotropic part is "
                        "youngModulus=" +
-                       number(iso.youngModulus) + " poissonRatio=" + number(iso.poissonRatio) +
-                       ": the sum is not the material asked for",
+                       formatNumber(iso.youngModulus) + " poissonRatio=" +
+                       formatNumber(iso.poissonRatio) + ": the sum is not the material asked for",
                    "youngModulusL");
     } else if (nu > -1 && nu < 0.5 && E > 0) {
       const double mu = E / (2 * (1 + nu)), lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
       if (std::abs(mu - m_parameters.muT) > 1e-3 * m_parameters.muT)
         msgWarning("the isotropic force field " + who +
-                       " has the shear modulus E / (2 (1 + nu)) = " + number(mu) +
-                       " Pa, shearModulusT is " + number(m_parameters.muT) + " Pa",
+                       " has the shear modulus E / (2 (1 + nu)) = " + formatNumber(mu) +
+                       " Pa, shearModulusT is " + formatNumber(m_parameters.muT) + " Pa",
                    "shearModulusT");
       // The sum must be positive definite (the reinforcement alone need not be).
       SpencerParameters total = m_parameters;
@@ -400,10 +309,10 @@ void TetrahedralFiberReinforcementForceField::compareWithIsotropicNeighbours(boo
           anisotropy::computeTransverselyIsotropicElasticity(Vec3d::UnitX(), total));
       if (!(eigen.eigenvalues().minCoeff() > 0)) {
         report(atInit,
-               "with the isotropic part of " + who + " (lambda = " + number(lambda) +
+               "with the isotropic part of " + who + " (lambda = " + formatNumber(lambda) +
                    " Pa), the material is not positive definite (smallest eigenvalue of its "
                    "elasticity " +
-                   number(eigen.eigenvalues().minCoeff()) +
+                   formatNumber(eigen.eigenvalues().minCoeff()) +
                    " Pa): change alpha, beta or shearModulusL",
                "beta");
         if (atInit) {
@@ -539,7 +448,7 @@ void TetrahedralFiberReinforcementForceField::addCorotationalForce(VecDeriv& f, 
     msgWarning(std::to_string(inverted.size()) +
                    " tetrahedra are inverted (the polar rotation has no derivative there; their "
                    "tangent leaves it out): elements " +
-                   describeIndices(inverted),
+                   describeElements(inverted),
                "method");
   }
 }
