@@ -61,6 +61,12 @@ bool parseGroups(const std::string& text, std::vector<std::vector<Index>>& group
   return true;
 }
 
+/// False when the tetrahedron uses a point past the positions (a topology the state does not
+/// match, reported by the components that use both): it is not tested.
+bool usesKnownPoints(const Tetrahedron& t, std::size_t pointCount) {
+  return std::all_of(t.begin(), t.end(), [&](Index v) { return v < pointCount; });
+}
+
 }  // namespace
 
 void TetrahedraRemover::init() {
@@ -128,6 +134,12 @@ void TetrahedraRemover::init() {
   for (const Vec6d& box : d_box.value())
     if (box[0] > box[3] || box[1] > box[4] || box[2] > box[5])
       msgError("a box is 'xmin ymin zmin xmax ymax zmax' with min <= max", "box");
+  if ((!d_box.value().empty() || !start.empty()) && currentPoints().empty())
+    msgError(
+        "the box and the tool need positions: a Vec3d mechanical state in this node, or "
+        "positions in " +
+            m_topology->path(),
+        d_box.value().empty() ? "toolStart" : "box");
   m_nextGroup = 0;
   m_removedCount = 0;
 }
@@ -149,6 +161,7 @@ void TetrahedraRemover::collectInBoxes(std::vector<Index>& out) const {
   const auto& points = currentPoints();
   const auto& tetrahedra = m_topology->tetrahedra();
   for (std::size_t t = 0; t < tetrahedra.size(); ++t) {
+    if (!usesKnownPoints(tetrahedra[t], points.size())) continue;
     Vec3d centre = Vec3d::Zero();
     for (Index v : tetrahedra[t]) centre += 0.25 * points[v];
     for (const Vec6d& box : d_box.value())
@@ -171,6 +184,7 @@ void TetrahedraRemover::collectCrossedByTool(double from, double to,
   const auto& points = currentPoints();
   const auto& tetrahedra = m_topology->tetrahedra();
   for (std::size_t t = 0; t < tetrahedra.size(); ++t) {
+    if (!usesKnownPoints(tetrahedra[t], points.size())) continue;
     cutting::TetrahedronPoints x;
     Eigen::AlignedBox3d box;
     for (int k = 0; k < 4; ++k) box.extend(x[k] = points[tetrahedra[t][k]]);
