@@ -70,23 +70,8 @@ bool usesKnownPoints(const Tetrahedron& t, std::size_t pointCount) {
 }  // namespace
 
 void TetrahedraRemover::init() {
-  // The link, else the node's topology that has tetrahedra (a grid may come first), else the
-  // node's first topology.
-  m_topology = l_topology.get();
-  if (!m_topology && node())
-    for (Topology* t : node()->getAll<Topology>())
-      if (!m_topology || (m_topology->tetrahedra().empty() && !t->tetrahedra().empty()))
-        m_topology = t;
-  if (!m_topology) {
-    msgError(
-        "no topology to cut: put a TetrahedronSetTopologyContainer in this node, or set "
-        "topology=\"@path/to/container\"",
-        "topology");
-    return;
-  }
-  m_state = node() ? node()->get<MechanicalState<Vec3Types>>() : nullptr;
-
-  // Listed removals: one group per time, increasing times, existing indices.
+  // Listed removals: one group per time, increasing times (the indices are checked against
+  // the topology in bwdInit).
   std::string error;
   if (!parseGroups(d_tetrahedra.value(), m_groups, error)) {
     msgError(error, "tetrahedra");
@@ -108,17 +93,6 @@ void TetrahedraRemover::init() {
                "times");
       return;
     }
-  const std::size_t count = m_topology->tetrahedra().size();
-  for (std::size_t k = 0; k < m_groups.size(); ++k)
-    for (Index t : m_groups[k])
-      if (t >= count) {
-        msgError("tetrahedron " + std::to_string(t) + " (group " + std::to_string(k) + ", time " +
-                     std::to_string(times[k]) + ") does not exist: " + m_topology->path() +
-                     " has " + std::to_string(count) + " tetrahedra",
-                 "tetrahedra");
-        return;
-      }
-
   // The tool: two end points, at the start and at the end.
   const auto& start = d_toolStart.value();
   const auto& end = d_toolEnd.value();
@@ -134,14 +108,45 @@ void TetrahedraRemover::init() {
   for (const Vec6d& box : d_box.value())
     if (box[0] > box[3] || box[1] > box[4] || box[2] > box[5])
       msgError("a box is 'xmin ymin zmin xmax ymax zmax' with min <= max", "box");
-  if ((!d_box.value().empty() || !start.empty()) && currentPoints().empty())
+  m_nextGroup = 0;
+  m_removedCount = 0;
+}
+
+void TetrahedraRemover::bwdInit() {
+  // After every init, so that a topological mapping placed after this component has filled
+  // the topology. The link, else the node's topology that has tetrahedra (a grid may come
+  // first), else the node's first topology.
+  if (!isValid()) return;
+  m_topology = l_topology.get();
+  if (!m_topology && node())
+    for (Topology* t : node()->getAll<Topology>())
+      if (!m_topology || (m_topology->tetrahedra().empty() && !t->tetrahedra().empty()))
+        m_topology = t;
+  if (!m_topology) {
+    msgError(
+        "no topology to cut: put a TetrahedronSetTopologyContainer in this node, or set "
+        "topology=\"@path/to/container\"",
+        "topology");
+    return;
+  }
+  m_state = node() ? node()->get<MechanicalState<Vec3Types>>() : nullptr;
+  const auto& times = d_times.value();
+  const std::size_t count = m_topology->tetrahedra().size();
+  for (std::size_t k = 0; k < m_groups.size(); ++k)
+    for (Index t : m_groups[k])
+      if (t >= count) {
+        msgError("tetrahedron " + std::to_string(t) + " (group " + std::to_string(k) + ", time " +
+                     std::to_string(times[k]) + ") does not exist: " + m_topology->path() +
+                     " has " + std::to_string(count) + " tetrahedra",
+                 "tetrahedra");
+        return;
+      }
+  if ((!d_box.value().empty() || !d_toolStart.value().empty()) && currentPoints().empty())
     msgError(
         "the box and the tool need positions: a Vec3d mechanical state in this node, or "
         "positions in " +
             m_topology->path(),
         d_box.value().empty() ? "toolStart" : "box");
-  m_nextGroup = 0;
-  m_removedCount = 0;
 }
 
 const std::vector<Vec3d>& TetrahedraRemover::currentPoints() const {

@@ -62,6 +62,8 @@ class TetrahedraRemover final : public BehaviorModel {
                             "The topology to cut (default: the one in this node)."};
 
   void init() override;
+  /// Finds the topology and the state (filled by then) and checks the listed indices.
+  void bwdInit() override;
   void updatePosition(double dt) override;
 
   /// How many tetrahedra this component removed so far.
