@@ -1,0 +1,301 @@
+// SPDX-License-Identifier: MIT
+#include "SparseGridTopology.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "formats/MeshData.h"
+
+namespace stroma {
+
+using sparsegrid::GridBox;
+
+namespace {
+
+// Below this filled share of its cells, a grid without full cells is around an open surface.
+constexpr double kOpenSurfaceShare = 0.05;
+
+// Share of the surface's largest side added around it when the scene gives no box.
+constexpr double kBoxMargin = 0.01;
+
+std::string describeBytes(double bytes) {
+  const char* units[] = {"bytes", "kB", "MB", "GB", "TB", "PB"};
+  int u = 0;
+  while (bytes >= 1000 && u < 5) {
+    bytes /= 1000;
+    ++u;
+  }
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3g %s", bytes, units[u]);
+  return text;
+}
+
+std::string describe(const Vec3d& v) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%g %g %g", v.x(), v.y(), v.z());
+  return text;
+}
+
+// Half of this machine's memory: more would leave nothing to the simulation.
+double memoryBudget() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
+  if (pages <= 0 || pageSize <= 0) return 8e9;
+  return 0.5 * double(pages) * double(pageSize);
+}
+
+void appendQuads(const std::vector<Quad>& quads, std::vector<Triangle>& triangles) {
+  for (const Quad& q : quads) {
+    triangles.push_back({q[0], q[1], q[2]});
+    triangles.push_back({q[0], q[2], q[3]});
+  }
+}
+
+}  // namespace
+
+SparseGridTopology::SparseGridTopology() {
+  m_inputs = {&d_n,
+              &d_min,
+              &d_max,
+              &d_cellWidth,
+              &d_nbVirtualFinerLevels,
+              &d_fractionSamples,
+              &d_fileTopology,
+              &d_filename,
+              &d_vertices,
+              &d_inputTriangles,
+              &d_inputQuads};
+  for (BaseData* input : m_inputs) addInput(input);
+  for (BaseData* output : std::initializer_list<BaseData*>{&d_position, &d_edges, &d_triangles,
+                                                           &d_quads, &d_tetrahedra, &d_hexahedra,
+                                                           &d_cellTypes, &d_volumeFractions})
+    addOutput(output);
+}
+
+void SparseGridTopology::init() {
+  d_hexahedra.value();  // builds now, so that bad input is reported at init
+}
+
+void SparseGridTopology::reinit() {
+  setDirty();
+  d_hexahedra.value();
+}
+
+const sparsegrid::SparseGrid& SparseGridTopology::grid() const {
+  d_hexahedra.value();
+  return m_grid;
+}
+
+void SparseGridTopology::adoptSurface() {
+  if (m_adopted) return;
+  m_adopted = true;
+  std::string ignored;
+  auto adopt = [&](auto& output, auto& input) {
+    if (BaseData* parent = output.parent()) {
+      if (!input.isSet()) input.setParent(parent, ignored);
+      output.setParent(nullptr, ignored);
+    } else if (output.isSet() && !input.isSet()) {
+      input.setValue(output.value());
+    }
+  };
+  adopt(d_position, d_vertices);
+  adopt(d_triangles, d_inputTriangles);
+  adopt(d_quads, d_inputQuads);
+  // src="@loader" also links the loader's other elements: the grid makes its own.
+  d_edges.setParent(nullptr, ignored);
+  d_tetrahedra.setParent(nullptr, ignored);
+  d_hexahedra.setParent(nullptr, ignored);
+}
+
+void SparseGridTopology::clearOutputs() {
+  m_grid = sparsegrid::SparseGrid{};
+  d_position.setValue({});
+  d_edges.setValue({});
+  d_triangles.setValue({});
+  d_quads.setValue({});
+  d_tetrahedra.setValue({});
+  d_hexahedra.setValue({});
+  d_cellTypes.setValue({});
+  d_volumeFractions.setValue({});
+}
+
+bool SparseGridTopology::readSurface(std::vector<Vec3d>& points, std::vector<Triangle>& triangles) {
+  const bool hasFileTopology = !d_fileTopology.value().original.empty();
+  const bool hasFilename = !d_filename.value().original.empty();
+  if (hasFileTopology && hasFilename)
+    msgWarning("both fileTopology and filename are given; filename is ignored", "filename");
+  if (hasFileTopology || hasFilename) {
+    const char* field = hasFileTopology ? "fileTopology" : "filename";
+    const Data<FileName>& file = hasFileTopology ? d_fileTopology : d_filename;
+    const std::string path = file.value().path();
+    // A file name linked from a loader that could not find it: the loader said so; this is a
+    // consequence, not a second problem.
+    std::error_code ec;
+    if (file.parent() && !std::filesystem::exists(path, ec)) {
+      msgInfo("no surface: the file '" + path + "' that " + field +
+                  " follows is missing (reported by its source)",
+              field);
+      setInvalid();
+      return false;
+    }
+    const auto format = meshFormatFromFileName(path);
+    if (!format) {
+      msgError("cannot tell the format of '" + path +
+                   "' from its extension: expected .obj, .stl, .vtk, .vtu, .vtp or .msh",
+               field);
+      return false;
+    }
+    MeshData mesh;
+    std::string error;
+    if (!readMeshFile(path, *format, mesh, error)) {
+      msgError(
+          "cannot read " + std::string(meshFormatName(*format)) + " file '" + path + "': " + error,
+          field);
+      return false;
+    }
+    for (const std::string& warning : mesh.warnings)
+      msgWarning("file '" + path + "': " + warning, field);
+    points = std::move(mesh.positions);
+    triangles = std::move(mesh.triangles);
+    appendQuads(mesh.quads, triangles);
+    if (triangles.empty()) {
+      msgError("file '" + path + "' holds no triangles or quads: a surface is needed", field);
+      return false;
+    }
+    return true;
+  }
+  points = d_vertices.value();
+  triangles = d_inputTriangles.value();
+  appendQuads(d_inputQuads.value(), triangles);
+  if (triangles.empty() || points.empty()) {
+    msgError(
+        "no surface to build the grid around: give fileTopology (a mesh file), or position "
+        "with triangles or quads (values, links, or src=\"@loader\")",
+        "fileTopology");
+    return false;
+  }
+  return true;
+}
+
+bool SparseGridTopology::computeBox(const std::vector<Vec3d>& points, GridBox& box) {
+  const Vec3i n = d_n.value();
+  const double width = d_cellWidth.value();
+  if (width <= 0 && (n.x() < 2 || n.y() < 2 || n.z() < 2)) {
+    msgError(
+        "expected at least 2 grid points along each axis (n counts points, as in SOFA: "
+        "n - 1 cells), got n = \"" +
+            std::to_string(n.x()) + " " + std::to_string(n.y()) + " " + std::to_string(n.z()) +
+            "\"",
+        "n");
+    return false;
+  }
+  // The box: the scene's, or the surface's bounding box with a margin.
+  Vec3d lo = d_min.value(), hi = d_max.value();
+  if (lo != hi) {
+    if ((hi - lo).minCoeff() <= 0) {
+      msgError("max must be above min along each axis; got min = \"" + describe(lo) +
+                   "\", max = \"" + describe(hi) + "\"",
+               "max");
+      return false;
+    }
+  } else {
+    lo = hi = points.front();
+    for (const Vec3d& p : points) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    const double side = (hi - lo).maxCoeff();
+    if (!(side > 0) || !std::isfinite(side)) {
+      msgError("the surface's points are all at one place (" + describe(lo) + "): give min and max",
+               "min");
+      return false;
+    }
+    lo -= Vec3d::Constant(kBoxMargin * side);
+    hi += Vec3d::Constant(kBoxMargin * side);
+  }
+  // Cells per axis, counted as reals first so that a huge request is refused, not wrapped.
+  const int levels = d_nbVirtualFinerLevels.value();
+  const double refine = std::ldexp(1.0, levels);
+  std::array<double, 3> cells{};
+  for (int a = 0; a < 3; ++a)
+    cells[a] = width > 0 ? std::max(1.0, std::ceil((hi[a] - lo[a]) / width * (1 - 1e-12)))
+                         : double(n[a] - 1);
+  const std::array<double, 3> finest{cells[0] * refine, cells[1] * refine, cells[2] * refine};
+  const double bytes = sparsegrid::estimateBuildBytes(finest, d_fractionSamples.value());
+  const double budget = memoryBudget();
+  if (bytes > budget || finest[0] * finest[1] * finest[2] > 4e9 ||
+      std::max({finest[0], finest[1], finest[2]}) > 1e9 ||
+      (finest[0] + 1) * (finest[1] + 1) * (finest[2] + 1) >= double(kInvalidIndex)) {
+    char size[128];
+    std::snprintf(size, sizeof size, "%.0f x %.0f x %.0f", finest[0], finest[1], finest[2]);
+    const char* field = levels > 0 ? "nbVirtualFinerLevels" : (width > 0 ? "cellWidth" : "n");
+    msgError(std::string("a grid of ") + size + " cells" +
+                 (levels > 0 ? " (" + std::to_string(levels) + " virtual finer levels)" : "") +
+                 " would need about " + describeBytes(bytes) +
+                 " of memory to build; the limit is half of this machine's memory (" +
+                 describeBytes(budget) + ") and 4e9 cells: use fewer cells",
+             field);
+    return false;
+  }
+  for (int a = 0; a < 3; ++a) {
+    box.cells[a] = int(finest[a]);
+    const double coarseSize = width > 0 ? width : (hi[a] - lo[a]) / cells[a];
+    box.spacing[a] = coarseSize / refine;
+  }
+  box.origin = lo;
+  return true;
+}
+
+void SparseGridTopology::doUpdate() {
+  adoptSurface();
+  // Adopting the surface re-links inputs: rebuild only when a value really changed.
+  std::vector<std::uint64_t> versions;
+  for (BaseData* input : m_inputs) versions.push_back(input->version());
+  if (versions == m_builtVersions) return;
+  m_builtVersions = versions;
+
+  std::vector<Vec3d> points;
+  std::vector<Triangle> triangles;
+  GridBox box;
+  if (!readSurface(points, triangles) || !computeBox(points, box)) {
+    clearOutputs();
+    return;
+  }
+  const bool fromFile =
+      !d_fileTopology.value().original.empty() || !d_filename.value().original.empty();
+  std::string error;
+  if (!sparsegrid::buildSparseGrid({points, triangles}, box, d_fractionSamples.value(), m_grid,
+                                   error)) {
+    msgError("bad surface: " + error, fromFile ? "fileTopology" : "triangles");
+    clearOutputs();
+    return;
+  }
+  for (int level = 0; level < d_nbVirtualFinerLevels.value(); ++level)
+    m_grid = sparsegrid::coarsenSparseGrid(m_grid);
+
+  // An open surface: the flood reached every cell, and the sub-cells around the surface too.
+  const double keptVolume = double(m_grid.cells.size()) * m_grid.box.spacing.prod();
+  if (m_grid.count(sparsegrid::CellType::full) == 0 &&
+      m_grid.filledVolume() < kOpenSurfaceShare * keptVolume)
+    msgWarning(
+        "the surface encloses no volume at this resolution: it is not closed, or has a "
+        "hole wider than a cell, and the flood fill of the outside reached every cell; "
+        "the grid keeps only the " +
+            std::to_string(m_grid.cells.size()) +
+            " cells the surface crosses, almost empty (volume fractions about 0)",
+        fromFile ? "fileTopology" : "triangles");
+
+  d_position.setValue(m_grid.points);
+  d_edges.setValue({});
+  d_triangles.setValue({});
+  d_quads.setValue({});
+  d_tetrahedra.setValue({});
+  d_hexahedra.setValue(m_grid.hexahedra);
+  d_cellTypes.setValue(m_grid.types);
+  d_volumeFractions.setValue(m_grid.fractions);
+}
+
+}  // namespace stroma
