@@ -120,7 +120,7 @@ bool buildSparseGrid(const Surface& surface, const GridBox& box, int samples, Sp
                         " points"),
                false;
 
-  const auto [cx, cy, cz] = box.cells;
+  const int cx = box.cells[0], cy = box.cells[1], cz = box.cells[2];
   const Vec3d& h = box.spacing;
   const std::uint64_t cellCount = box.cellCount();
   std::vector<std::uint8_t> state(cellCount, kUnknown);
