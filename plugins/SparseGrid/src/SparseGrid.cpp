@@ -112,6 +112,9 @@ bool buildSparseGrid(const Surface& surface, const GridBox& box, int samples, Sp
   if (samples < 1 || samples > 16) return (error = "expected 1 to 16 samples per axis"), false;
   if (box.pointCount() >= kInvalidIndex)
     return (error = "the grid has more than 2^32 - 1 points"), false;
+  for (std::size_t p = 0; p < surface.points.size(); ++p)
+    if (!surface.points[p].allFinite())
+      return (error = "point " + std::to_string(p) + " has a coordinate that is not finite"), false;
   for (std::size_t t = 0; t < surface.triangles.size(); ++t)
     for (Index v : surface.triangles[t])
       if (v >= surface.points.size())
