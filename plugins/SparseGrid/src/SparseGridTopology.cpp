@@ -80,6 +80,7 @@ void SparseGridTopology::init() {
 }
 
 void SparseGridTopology::reinit() {
+  m_builtVersions.clear();  // rebuild even if no input's version moved
   setDirty();
   d_hexahedra.value();
 }
