@@ -202,6 +202,14 @@ bool SparseGridTopology::computeBox(const std::vector<Vec3d>& points, GridBox& b
                "max");
       return false;
     }
+    // The flood starts on the box's border: a surface cut by the box loses its inside there.
+    std::size_t outside = 0;
+    for (const Vec3d& p : points) outside += (p - lo).minCoeff() < 0 || (hi - p).minCoeff() < 0;
+    if (outside > 0)
+      msgWarning(std::to_string(outside) + " of the surface's " + std::to_string(points.size()) +
+                     " points are outside the box [min, max]: the grid cuts the surface, and "
+                     "where the cut crosses the inside, the flood fill of the outside enters it",
+                 "min");
   } else {
     lo = hi = points.front();
     for (const Vec3d& p : points) {

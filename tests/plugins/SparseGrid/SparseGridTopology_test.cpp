@@ -278,6 +278,20 @@ TEST_F(SparseGridTopologyTest, GridTooLargeForMemorySaysHowMuchItWouldNeed) {
   EXPECT_EQ(last.field, "cellWidth");
 }
 
+TEST_F(SparseGridTopologyTest, BadBoxIsReported) {
+  const std::string file = write("cube.obj", boxSurface(Vec3d::Zero(), Vec3d::Ones()).obj());
+  EXPECT_FALSE(load(wrap("<SparseGridTopology name=\"grid\" fileTopology=\"" + file +
+                         "\" n=\"5 5 5\" min=\"0 0 0\" max=\"1 -1 1\"/>\n")));
+  EXPECT_EQ(find(MessageLevel::error, "max must be above min").field, "max");
+  scene.unload();
+  // A box that cuts the surface: a warning, and the grid is built.
+  ASSERT_TRUE(load(wrap("<SparseGridTopology name=\"grid\" fileTopology=\"" + file +
+                        "\" n=\"5 5 5\" min=\"-0.1 -0.1 -0.1\" max=\"0.5 1.1 1.1\"/>\n")))
+      << messages();
+  EXPECT_EQ(find(MessageLevel::warning, "points are outside the box").field, "min");
+  EXPECT_FALSE(topology("/grid")->hexahedra().empty());
+}
+
 TEST_F(SparseGridTopologyTest, MissingFileOrSurfaceIsAnError) {
   EXPECT_FALSE(
       load(wrap("<SparseGridTopology name=\"grid\" fileTopology=\"no/such/mesh.obj\" "
