@@ -352,16 +352,17 @@ bool buildSparseGrid(const Surface& surface, const GridBox& box, int samples, Sp
     boundaryFraction[b] = filled / s3;
   }
 
-  // --- 7. Keep the boundary and full cells -----------------------------------------------------
+  // --- 7. Keep the boundary cells, then the full ones (SOFA's order) ---------------------------
   grid = SparseGrid{};
   grid.box = box;
-  for (std::uint64_t cell = 0; cell < cellCount; ++cell) {
-    if (state[cell] == kOutside) continue;
-    grid.cells.push_back(cell);
-    const bool onSurface = state[cell] == kSurface;
-    grid.types.push_back(onSurface ? CellType::boundary : CellType::full);
-    grid.fractions.push_back(onSurface ? boundaryFraction[boundaryIndex[cell]] : 1.0);
-  }
+  for (const std::uint8_t kept : {kSurface, kInside})
+    for (std::uint64_t cell = 0; cell < cellCount; ++cell) {
+      if (state[cell] != kept) continue;
+      grid.cells.push_back(cell);
+      const bool onSurface = kept == kSurface;
+      grid.types.push_back(onSurface ? CellType::boundary : CellType::full);
+      grid.fractions.push_back(onSurface ? boundaryFraction[boundaryIndex[cell]] : 1.0);
+    }
   makeGridElements(grid);
   return true;
 }
@@ -372,19 +373,23 @@ void makeGridElements(SparseGrid& grid) {
   auto pointIndex = [&](const std::array<int, 3>& c, const int* q) {
     return (c[0] + q[0]) + px * ((c[1] + q[1]) + py * std::uint64_t(c[2] + q[2]));
   };
-  // Mark the corners of the kept cells, then number them in grid point order.
+  // Mark the corners of the kept cells, then number them by increasing (x, y, z): x slowest,
+  // z fastest, as SOFA's map from corner positions to indices does.
   std::vector<Index> id(box.pointCount(), kInvalidIndex);
   for (std::uint64_t cell : grid.cells) {
     const auto c = box.cellCoordinates(cell);
     for (const auto& q : kCorners) id[pointIndex(c, q)] = 0;
   }
   grid.points.clear();
-  for (std::uint64_t p = 0; p < id.size(); ++p) {
-    if (id[p] == kInvalidIndex) continue;
-    id[p] = Index(grid.points.size());
-    const auto i = int(p % px), j = int((p / px) % py), k = int(p / (px * py));
-    grid.points.push_back(box.origin + Vec3d(i, j, k).cwiseProduct(box.spacing));
-  }
+  const int pz = box.cells[2] + 1;
+  for (int i = 0; i < int(px); ++i)
+    for (int j = 0; j < int(py); ++j)
+      for (int k = 0; k < pz; ++k) {
+        Index& p = id[i + px * (j + py * std::uint64_t(k))];
+        if (p == kInvalidIndex) continue;
+        p = Index(grid.points.size());
+        grid.points.push_back(box.origin + Vec3d(i, j, k).cwiseProduct(box.spacing));
+      }
   grid.hexahedra.resize(grid.cells.size());
   for (std::size_t e = 0; e < grid.cells.size(); ++e) {
     const auto c = box.cellCoordinates(grid.cells[e]);
@@ -403,7 +408,10 @@ SparseGrid coarsenSparseGrid(const SparseGrid& fine, std::vector<std::array<Inde
   std::vector<std::uint8_t> corner(fine.cells.size());
   for (std::size_t f = 0; f < fine.cells.size(); ++f) {
     const auto c = fine.box.cellCoordinates(fine.cells[f]);
-    byParent[f] = {coarse.box.cellIndex(c[0] / 2, c[1] / 2, c[2] / 2), Index(f)};
+    // Sorted as SOFA orders a coarser level: x slowest, z fastest.
+    const std::uint64_t pi = c[0] / 2, pj = c[1] / 2, pk = c[2] / 2;
+    byParent[f] = {pk + std::uint64_t(coarse.box.cells[2]) * (pj + coarse.box.cells[1] * pi),
+                   Index(f)};
     const int dx = c[0] % 2, dy = c[1] % 2, dz = c[2] % 2;
     // kCorners order: (0,0) 0, (1,0) 1, (1,1) 2, (0,1) 3 in x, y; +4 at z = 1.
     corner[f] = std::uint8_t((dy ? (dx ? 2 : 3) : dx) + 4 * dz);
@@ -412,18 +420,19 @@ SparseGrid coarsenSparseGrid(const SparseGrid& fine, std::vector<std::array<Inde
 
   if (children) children->clear();
   for (std::size_t g = 0; g < byParent.size();) {
-    const std::uint64_t parent = byParent[g].first;
+    const std::uint64_t key = byParent[g].first;
     std::array<Index, 8> kids;
     kids.fill(kInvalidIndex);
     int fullChildren = 0;
     double fraction = 0;
-    for (; g < byParent.size() && byParent[g].first == parent; ++g) {
+    for (; g < byParent.size() && byParent[g].first == key; ++g) {
       const Index f = byParent[g].second;
       kids[corner[f]] = f;
       fullChildren += fine.types[f] == CellType::full;
       fraction += fine.fractions[f];
     }
-    coarse.cells.push_back(parent);
+    const auto c = fine.box.cellCoordinates(fine.cells[byParent[g - 1].second]);
+    coarse.cells.push_back(coarse.box.cellIndex(c[0] / 2, c[1] / 2, c[2] / 2));
     coarse.types.push_back(fullChildren == 8 ? CellType::full : CellType::boundary);
     coarse.fractions.push_back(fraction / 8);
     if (children) children->push_back(kids);

@@ -28,10 +28,14 @@
 // cells across, 0.015 % at 16, 0.006 % at 32.
 //
 // Numbering: cell (i, j, k) of a box of cx x cy x cz cells is i + cx (j + cy k); grid point
-// (i, j, k) is i + (cx+1) (j + (cy+1) k). The kept cells are in increasing cell index, their
-// corner points (shared corners once) in increasing grid point index, and each hexahedron lists
-// its corners in the order of TopologyTypes.h: (i,j,k) (i+1,j,k) (i+1,j+1,k) (i,j+1,k), then the
-// same at k+1; with a positive spacing every hexahedron is positively oriented.
+// (i, j, k) is i + (cx+1) (j + (cy+1) k). The mesh follows SOFA's SparseGridTopology, so that
+// scenes naming points or hexahedra by index keep working: the kept cells are the boundary
+// cells, then the full cells, each in increasing cell index (a coarser level made by
+// coarsenSparseGrid: x slowest, z fastest, as SOFA's buildFromFiner); the points are the kept
+// cells' corners, shared ones once, by increasing (x, y, z) (x slowest, z fastest: SOFA's map
+// from positions to indices). Each hexahedron lists its corners in the order of
+// TopologyTypes.h: (i,j,k) (i+1,j,k) (i+1,j+1,k) (i,j+1,k), then the same at k+1; with a
+// positive spacing every hexahedron is positively oriented.
 //
 // Cost: the surface pass tests each triangle against the cells of its bounding box, then the
 // sub-cells of the boundary cells it overlaps; both floods visit each (sub-)cell once; each
@@ -80,7 +84,7 @@ struct GridBox {
 /// The kept (non-empty) cells of a box, as a hexahedral mesh with per-cell data.
 struct SparseGrid {
   GridBox box;
-  std::vector<std::uint64_t> cells;   ///< cell index in `box` of each kept cell, increasing
+  std::vector<std::uint64_t> cells;   ///< cell index in `box` of each kept cell (Numbering)
   std::vector<CellType> types;        ///< boundary or full, per kept cell
   std::vector<double> fractions;      ///< filled volume fraction in [0, 1], per kept cell
   std::vector<Vec3d> points;          ///< corners of the kept cells, shared ones once

@@ -19,7 +19,8 @@ namespace {
 // Below this filled share of its cells, a grid without full cells is around an open surface.
 constexpr double kOpenSurfaceShare = 0.05;
 
-// Share of the surface's largest side added around it when the scene gives no box.
+// Share of each side of the surface's bounding box added around it when the scene gives no
+// box (SOFA's).
 constexpr double kBoxMargin = 0.01;
 
 std::string describeBytes(double bytes) {
@@ -222,16 +223,21 @@ bool SparseGridTopology::computeBox(const std::vector<Vec3d>& points, GridBox& b
                "min");
       return false;
     }
-    lo -= Vec3d::Constant(kBoxMargin * side);
-    hi += Vec3d::Constant(kBoxMargin * side);
+    // SOFA grows each side by 1 % of its own length; a flat side by 1 % of the largest.
+    for (int a = 0; a < 3; ++a) {
+      const double margin = kBoxMargin * (hi[a] > lo[a] ? hi[a] - lo[a] : side);
+      lo[a] -= margin;
+      hi[a] += margin;
+    }
   }
   // Cells per axis, counted as reals first so that a huge request is refused, not wrapped.
   const int levels = d_nbVirtualFinerLevels.value();
   const double refine = std::ldexp(1.0, levels);
   std::array<double, 3> cells{};
+  // cellWidth, as SOFA: n = ceil(side / cellWidth) + 1 points on the same box (cells at most
+  // cellWidth wide).
   for (int a = 0; a < 3; ++a)
-    cells[a] = width > 0 ? std::max(1.0, std::ceil((hi[a] - lo[a]) / width * (1 - 1e-12)))
-                         : double(n[a] - 1);
+    cells[a] = width > 0 ? std::max(1.0, std::ceil((hi[a] - lo[a]) / width)) : double(n[a] - 1);
   const std::array<double, 3> finest{cells[0] * refine, cells[1] * refine, cells[2] * refine};
   const double bytes = sparsegrid::estimateBuildBytes(finest, d_fractionSamples.value());
   const double budget = memoryBudget();
@@ -251,8 +257,7 @@ bool SparseGridTopology::computeBox(const std::vector<Vec3d>& points, GridBox& b
   }
   for (int a = 0; a < 3; ++a) {
     box.cells[a] = int(finest[a]);
-    const double coarseSize = width > 0 ? width : (hi[a] - lo[a]) / cells[a];
-    box.spacing[a] = coarseSize / refine;
+    box.spacing[a] = (hi[a] - lo[a]) / cells[a] / refine;
   }
   box.origin = lo;
   return true;

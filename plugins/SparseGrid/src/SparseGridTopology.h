@@ -20,16 +20,17 @@ namespace stroma {
 /// quads are split in two triangles. Those given values are the input: once the grid is made,
 /// `position` holds the grid's points and `triangles`/`quads` are emptied.
 ///
-/// The grid: `n` points per axis (n - 1 cells, as SOFA), or cells of `cellWidth` (then the box
-/// grows to a whole number of cells); the box is `min`/`max` when given (min != max), else the
-/// surface's bounding box grown by 1 % of its largest side on each side, so that the surface
-/// never lies on the border. `nbVirtualFinerLevels` = L classifies and measures on a grid
+/// The grid: `n` points per axis (n - 1 cells, as SOFA), or n = ceil(side / cellWidth) + 1 (as
+/// SOFA: cells at most `cellWidth` wide); the box is `min`/`max` when given (min != max), else
+/// the surface's bounding box grown by 1 % of each side at both ends (as SOFA), so that the
+/// surface never lies on the border. `nbVirtualFinerLevels` = L classifies and measures on a grid
 /// 2^L times finer, then groups the cells 2^L x 2^L x 2^L (SparseGrid.h, coarsenSparseGrid):
 /// thin parts and holes are resolved at the finer size; the hexahedra are those of `n`.
 ///
 /// Outputs, made on first read (a DataEngine): `position` (kept cells' corners, shared ones
 /// once), `hexahedra` (TopologyTypes.h order, positive), and per hexahedron `cellTypes` and
-/// `volumeFractions`.
+/// `volumeFractions`; numbered as SOFA's SparseGridTopology (SparseGrid.h), so that scenes that
+/// name points by index keep working.
 class SparseGridTopology final : public Topology, public DataEngine {
  public:
   Data<Vec3i> d_n{this, "n", Vec3i(2, 2, 2),
@@ -38,16 +39,17 @@ class SparseGridTopology final : public Topology, public DataEngine {
                     "min",
                     Vec3d::Zero(),
                     "Lower corner of the grid; with min == max (default) the surface's bounding "
-                    "box grown by 1 %.",
+                    "box, each side grown by 1 %.",
                     {.unit = "m"}};
   Data<Vec3d> d_max{
       this, "max", Vec3d::Zero(), "Upper corner of the grid (see min).", {.unit = "m"}};
-  Data<double> d_cellWidth{this,
-                           "cellWidth",
-                           0.0,
-                           "When > 0, cubic cells of this size replace n: ceil(side / cellWidth) "
-                           "cells per axis from min, the box growing to fit.",
-                           {.unit = "m", .min = 0.0}};
+  Data<double> d_cellWidth{
+      this,
+      "cellWidth",
+      0.0,
+      "When > 0, replaces n: ceil(side / cellWidth) cells per axis, each at most "
+      "cellWidth wide (as SOFA).",
+      {.unit = "m", .min = 0.0}};
   Data<int> d_nbVirtualFinerLevels{
       this,
       "nbVirtualFinerLevels",
