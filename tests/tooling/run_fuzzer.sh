@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Runs the scene loader fuzzer for a bounded time. Fails on any crash, leak, timeout, excess
+# Runs a fuzzer (the scene loader's by default) for a bounded time. Fails on any crash, leak, timeout, excess
 # memory or sanitizer report; the input that triggered it is saved in WORK_DIR/artifacts/ and
 # reproduces with `SceneLoaderFuzzer FILE` (same STROMA_PLUGIN_PATH).
 # New interesting inputs go to WORK_DIR/corpus, kept between runs; the seed corpus in fuzz/corpus
 # is only read.
-# Usage: run_fuzzer.sh FUZZER PLUGIN_DIR WORK_DIR [SECONDS]
+# Usage: run_fuzzer.sh FUZZER PLUGIN_DIR WORK_DIR [SECONDS [SEED_CORPUS [DICTIONARY]]]
+#   SEED_CORPUS: default fuzz/corpus; DICTIONARY: default fuzz/scene.dict, "none" for none
 #   STROMA_FUZZ_SEED: libFuzzer's -seed (default 1, so that CI runs are alike; 0 is random)
 set -euo pipefail
 
@@ -14,6 +15,10 @@ plugins=$(realpath "$2")
 work=$3
 seconds=${4:-30}
 here=$(cd "$(dirname "$0")" && pwd)
+seeds=${5:-$here/fuzz/corpus}
+dictionary=${6:-$here/fuzz/scene.dict}
+dict_option=()
+[ "$dictionary" != none ] && dict_option=(-dict="$dictionary")
 
 mkdir -p "$work/corpus" "$work/artifacts" "$work/cwd"
 rm -f "$work"/artifacts/*
@@ -25,7 +30,7 @@ log=$work/fuzz.log
 
 # From a scratch directory: relative <include> names then resolve nowhere interesting.
 rc=0
-(cd "$work/cwd" && "$fuzzer" "$work/corpus" "$here/fuzz/corpus" -dict="$here/fuzz/scene.dict" \
+(cd "$work/cwd" && "$fuzzer" "$work/corpus" "$seeds" "${dict_option[@]}" \
   -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 -max_len=4096 \
   -seed="${STROMA_FUZZ_SEED:-1}" -artifact_prefix="$work/artifacts/" -print_final_stats=1) \
   >"$log" 2>&1 || rc=$?
