@@ -39,6 +39,7 @@
 #include "core/ThreadPool.h"
 #include "core/Types.h"
 #include "linalg/AssembledMatrix.h"
+#include "topology/TopologyChange.h"
 #include "topology/TopologyTypes.h"
 
 namespace stroma {
@@ -88,16 +89,23 @@ class CorotationalElements {
     m_matrices.clear();
     m_degenerate.assign(count, 0);
     if constexpr (N == 4) m_stiffnessFactors.assign(count, fem::TetrahedronRows{});
-    // Vertex -> corners (e * N + local), by a counting sort: increasing element order.
-    m_vertexOffsets.assign(pointCount + 1, 0);
-    for (const Indices& element : m_elements)
-      for (Index v : element) ++m_vertexOffsets[v + 1];
-    for (std::size_t v = 0; v < pointCount; ++v) m_vertexOffsets[v + 1] += m_vertexOffsets[v];
-    m_vertexCorners.resize(m_vertexOffsets[pointCount]);
-    std::vector<Index> next(m_vertexOffsets.begin(), m_vertexOffsets.end() - 1);
-    for (std::size_t e = 0; e < count; ++e)
-      for (int i = 0; i < N; ++i)
-        m_vertexCorners[next[m_elements[e][i]]++] = static_cast<Index>(e * N + i);
+    buildVertexAdjacency(pointCount);
+  }
+
+  /// Follows the removal of elements at run time (cutting; topology/TopologyChange.h: each
+  /// removed slot, in the order of `removed`, receives the last element): the constants,
+  /// rotations and stiffness factors of the kept elements move with them and nothing is
+  /// recomputed; the vertex adjacency is rebuilt (a counting sort, linear in the elements, no
+  /// element computation). The results equal those of setElements and computeConstants on the
+  /// remaining elements, bit for bit.
+  void removeElements(std::span<const Index> removed) {
+    applyRemoval(m_elements, removed);
+    applyRemoval(m_constants, removed);
+    applyRemoval(m_rotations, removed);
+    if constexpr (N == 4) applyRemoval(m_stiffnessFactors, removed);
+    m_corners.resize(m_elements.size() * N);
+    m_degenerate.resize(m_elements.size());
+    buildVertexAdjacency(pointCount());
   }
 
   std::size_t size() const { return m_elements.size(); }
@@ -263,6 +271,19 @@ class CorotationalElements {
   }
 
  private:
+  /// Vertex -> corners (e * N + local), by a counting sort: increasing element order.
+  void buildVertexAdjacency(std::size_t pointCount) {
+    m_vertexOffsets.assign(pointCount + 1, 0);
+    for (const Indices& element : m_elements)
+      for (Index v : element) ++m_vertexOffsets[v + 1];
+    for (std::size_t v = 0; v < pointCount; ++v) m_vertexOffsets[v + 1] += m_vertexOffsets[v];
+    m_vertexCorners.resize(m_vertexOffsets[pointCount]);
+    std::vector<Index> next(m_vertexOffsets.begin(), m_vertexOffsets.end() - 1);
+    for (std::size_t e = 0; e < m_elements.size(); ++e)
+      for (int i = 0; i < N; ++i)
+        m_vertexCorners[next[m_elements[e][i]]++] = static_cast<Index>(e * N + i);
+  }
+
   /// gather() by coordinate rows, for tetrahedra.
   fem::TetrahedronRows gatherRows(std::span<const Vec3d> v, std::size_t e) const {
     const Indices& n = m_elements[e];

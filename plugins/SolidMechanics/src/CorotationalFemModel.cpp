@@ -26,8 +26,10 @@ bool CorotationalFemModel<Element>::readElements(const State& state) {
   m_stateSize = state.size();
   std::vector<typename Elements::Indices> split;
   std::span<const typename Elements::Indices> elements;
+  m_readTetrahedra = false;
   if constexpr (Element::nodeCount == 4) {
     elements = m_topology->tetrahedra();
+    m_readTetrahedra = !elements.empty();
     if (elements.empty()) {
       // A hexahedral mesh (a grid) given to a tetrahedral force field: SOFA splits it too.
       split = splitHexahedraIntoTetrahedra(m_topology->hexahedra());
@@ -97,8 +99,24 @@ bool CorotationalFemModel<Element>::computeConstants(const State& state, bool at
 }
 
 template <class Element>
+bool CorotationalFemModel<Element>::followRemovals(const State& state) {
+  if (!m_ready || !m_readTetrahedra || state.size() != m_stateSize) return false;
+  const auto changes = m_topology->changesSince(m_topologyRevision);
+  if (!changes) return false;
+  for (const TopologyChange& change : *changes) {
+    // A change made before these elements were read would not match them: rebuild.
+    if (change.tetrahedra.sizeBefore != m_elements.size()) return false;
+    m_elements.removeElements(change.tetrahedra.removed);
+  }
+  ++m_elementsRevision;
+  m_topologyRevision = m_topology->revision();
+  return true;
+}
+
+template <class Element>
 bool CorotationalFemModel<Element>::refresh(State& state, fem::RotationMethod method) {
   if (!m_topology) return false;
+  if (m_topology->revision() != m_topologyRevision && followRemovals(state)) return m_ready;
   if (m_topology->revision() != m_topologyRevision || state.size() != m_stateSize) {
     // The mesh changed: start again (allocates, as a topological change does).
     if (!readElements(state) || !computeConstants(state, true)) {

@@ -39,7 +39,10 @@ class CorotationalFemModel {
 
   /// Call at the start of addForce: recomputes the constants when youngModulus or
   /// poissonRatio changed (an invalid change is a warning and is not applied), everything when
-  /// the topology's elements or the state's size changed. Returns ready().
+  /// the topology's elements or the state's size changed. Tetrahedra removed at run time
+  /// (cutting, Topology::removeTetrahedra) are followed instead: the per-element data of the
+  /// removed and moved elements only, nothing recomputed (CorotationalElements::removeElements);
+  /// with no tetrahedron left the force is zero. Returns ready().
   bool refresh(State& state, fem::RotationMethod method);
 
   /// True once init succeeded (the loops may run).
@@ -53,6 +56,9 @@ class CorotationalFemModel {
 
  private:
   bool readElements(const State& state);
+  /// Follows the logged removals since the elements were read; false when they cannot be
+  /// followed (not logged, hexahedra, elements split from a grid, a new state size).
+  bool followRemovals(const State& state);
   bool computeConstants(const State& state, bool atInit);
   const char* elementName() const { return Element::nodeCount == 4 ? "tetrahedra" : "hexahedra"; }
 
@@ -64,6 +70,7 @@ class CorotationalFemModel {
   Elements m_elements;
   const Topology* m_topology = nullptr;
   bool m_ready = false;
+  bool m_readTetrahedra = false;  ///< the elements are the topology's tetrahedra, in its order
   std::size_t m_stateSize = 0;
   std::uint64_t m_topologyRevision = 0;
   std::uint64_t m_elementsRevision = 0;

@@ -205,5 +205,27 @@ TEST(TetrahedraRemover, CuttingAPartAwayFreesItsPointsWithOneWarning) {
   EXPECT_EQ(numbers(s.text("@Beam/dofs.position")).size(), 45u * 3);
 }
 
+TEST(TetrahedraRemover, CuttingEverythingFreesThePointsWithOneWarning) {
+  SceneHolder s;
+  ASSERT_TRUE(s.load(beam(R"(box="-1 -1 -1  1 1 1" startTime="0.02")")));
+  ASSERT_TRUE(s.step(2));
+  ASSERT_TRUE(s.scene().step()) << describe(s.scene().log());
+  const Topology* topology = s.get<Topology>("@Beam/topology");
+  EXPECT_TRUE(topology->tetrahedra().empty());
+  EXPECT_TRUE(topology->triangles().empty());
+  EXPECT_TRUE(topology->edges().empty());
+  // Nothing holds the points anymore (no mass, no stiffness): they keep their velocity.
+  for (int i = 0; i < 20; ++i) ASSERT_TRUE(s.scene().step()) << describe(s.scene().log());
+  std::size_t warnings = 0;
+  for (const Message& m : s.scene().log().messages())
+    if (m.level == MessageLevel::warning) {
+      ++warnings;
+      EXPECT_NE(m.text.find("45 points belong to no tetrahedron anymore"), std::string::npos)
+          << m.text;
+    }
+  EXPECT_EQ(warnings, 1u);
+  EXPECT_TRUE(allFinite(s));
+}
+
 }  // namespace
 }  // namespace stroma::test
