@@ -110,51 +110,62 @@ void buildStVKTensorMass(const TensorMassMesh& mesh, const fem::LameParameters& 
   for (std::size_t t = 0; t < mesh.tetrahedra.size(); ++t) {
     const Tetrahedron& v = mesh.tetrahedra[t];
     const TetrahedronTensors T(mesh.shapes[t], lame);
-
-    // Terms of one vertex (table 1, first row).
-    for (int p = 0; p < 4; ++p) {
-      StVKTensorMass::VertexTerms& vertex = model.vertices[v[p]];
-      vertex.K += T.stiffness(p, p);
-      vertex.c += T.cubic(p, p, p);
-      vertex.d += T.quartic(p, p, p, p);
-    }
-    // Terms of two vertices, in the edge's orientation (a, b).
-    for (Index e : mesh.edgesInTetrahedron[t]) {
-      const int a = localVertex(v, mesh.edges[e][0]), b = localVertex(v, mesh.edges[e][1]);
-      StVKTensorMass::EdgeTerms& edge = model.edgeTerms[e];
-      edge.K += T.stiffness(a, b);
-      edge.c[0] += T.cubic(a, a, b);
-      edge.c[1] += T.cubic(a, b, b);
-      edge.c[2] += T.cubic(b, a, a);
-      edge.c[3] += T.cubic(b, a, b);
-      edge.d[0] += T.quartic(a, a, a, b);
-      edge.d[1] += T.quartic(b, b, a, b);
-      edge.d[2] += T.quartic(a, a, b, b);
-      edge.d[3] += T.quartic(a, b, a, b);
-    }
-    // Terms of three vertices, in the triangle's order (a, b, c).
+    addStVKTetrahedronTerms(v, T, mesh.edgesInTetrahedron[t], mesh.trianglesInTetrahedron[t], 1.0,
+                            model);
+    // The edges of each triangle, from the first tetrahedron that has it.
     for (Index f : mesh.trianglesInTetrahedron[t]) {
+      if (model.triangleEdges[f][0] != kInvalidIndex) continue;
       const Triangle& tri = mesh.triangles[f];
       const int a = localVertex(v, tri[0]), b = localVertex(v, tri[1]), c = localVertex(v, tri[2]);
-      StVKTensorMass::TriangleTerms& triangle = model.triangleTerms[f];
-      triangle.c[0] += T.cubic(a, b, c);
-      triangle.c[1] += T.cubic(b, a, c);
-      triangle.c[2] += T.cubic(c, a, b);
-      triangle.e[0] += T.quartic(a, a, b, c);
-      triangle.e[1] += T.quartic(b, b, a, c);
-      triangle.e[2] += T.quartic(c, c, a, b);
-      triangle.e[3] += T.quartic(a, b, a, c);
-      triangle.e[4] += T.quartic(a, b, b, c);
-      triangle.e[5] += T.quartic(a, c, b, c);
-      if (model.triangleEdges[f][0] == kInvalidIndex) {
-        const auto& edges = mesh.edgesInTetrahedron[t];
-        model.triangleEdges[f] = {edges[kLocalEdge[a][b]], edges[kLocalEdge[b][c]],
-                                  edges[kLocalEdge[a][c]]};
-      }
+      const auto& edges = mesh.edgesInTetrahedron[t];
+      model.triangleEdges[f] = {edges[kLocalEdge[a][b]], edges[kLocalEdge[b][c]],
+                                edges[kLocalEdge[a][c]]};
     }
     // Terms of four vertices.
     model.tetrahedronTerms[t] = {T.quartic(0, 1, 2, 3), T.quartic(0, 2, 1, 3),
                                  T.quartic(0, 3, 1, 2)};
+  }
+}
+
+void addStVKTetrahedronTerms(const Tetrahedron& v, const TetrahedronTensors& T,
+                             const std::array<Index, 6>& edgesOfTetrahedron,
+                             const std::array<Index, 4>& trianglesOfTetrahedron, double sign,
+                             StVKTensorMass& model) {
+  // Terms of one vertex (table 1, first row).
+  for (int p = 0; p < 4; ++p) {
+    StVKTensorMass::VertexTerms& vertex = model.vertices[v[p]];
+    vertex.K += sign * T.stiffness(p, p);
+    vertex.c += sign * T.cubic(p, p, p);
+    vertex.d += sign * T.quartic(p, p, p, p);
+  }
+  // Terms of two vertices, in the edge's orientation (a, b).
+  for (Index e : edgesOfTetrahedron) {
+    const int a = localVertex(v, model.edges[e][0]), b = localVertex(v, model.edges[e][1]);
+    StVKTensorMass::EdgeTerms& edge = model.edgeTerms[e];
+    edge.K += sign * T.stiffness(a, b);
+    edge.c[0] += sign * T.cubic(a, a, b);
+    edge.c[1] += sign * T.cubic(a, b, b);
+    edge.c[2] += sign * T.cubic(b, a, a);
+    edge.c[3] += sign * T.cubic(b, a, b);
+    edge.d[0] += sign * T.quartic(a, a, a, b);
+    edge.d[1] += sign * T.quartic(b, b, a, b);
+    edge.d[2] += sign * T.quartic(a, a, b, b);
+    edge.d[3] += sign * T.quartic(a, b, a, b);
+  }
+  // Terms of three vertices, in the triangle's order (a, b, c).
+  for (Index f : trianglesOfTetrahedron) {
+    const Triangle& tri = model.triangles[f];
+    const int a = localVertex(v, tri[0]), b = localVertex(v, tri[1]), c = localVertex(v, tri[2]);
+    StVKTensorMass::TriangleTerms& triangle = model.triangleTerms[f];
+    triangle.c[0] += sign * T.cubic(a, b, c);
+    triangle.c[1] += sign * T.cubic(b, a, c);
+    triangle.c[2] += sign * T.cubic(c, a, b);
+    triangle.e[0] += sign * T.quartic(a, a, b, c);
+    triangle.e[1] += sign * T.quartic(b, b, a, c);
+    triangle.e[2] += sign * T.quartic(c, c, a, b);
+    triangle.e[3] += sign * T.quartic(a, b, a, c);
+    triangle.e[4] += sign * T.quartic(a, b, b, c);
+    triangle.e[5] += sign * T.quartic(a, c, b, c);
   }
 }
 

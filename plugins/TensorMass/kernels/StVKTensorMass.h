@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "TensorMass/kernels/LinearTensorMass.h"
+#include "TensorMass/kernels/TetrahedronTensors.h"
 #include "TensorMass/kernels/VertexEdgeTensors.h"
 
 namespace stroma::tensormass {
@@ -67,6 +68,15 @@ struct StVKTensorMass {
 /// its tetrahedra) onto its vertices, edges, triangles and tetrahedra.
 void buildStVKTensorMass(const TensorMassMesh& mesh, const fem::LameParameters& lame,
                          StVKTensorMass& model);
+
+/// Adds sign times the terms of one tetrahedron (vertices v, tensors T) to its vertices, to its
+/// edges (indices into model.edges, kTetrahedronEdges order) and to its triangles (indices into
+/// model.triangles), each in the orientation stored there; its own tetrahedron terms are not
+/// touched. What buildStVKTensorMass does per tetrahedron (sign 1) and a removal undoes (-1).
+void addStVKTetrahedronTerms(const Tetrahedron& v, const TetrahedronTensors& T,
+                             const std::array<Index, 6>& edgesOfTetrahedron,
+                             const std::array<Index, 4>& trianglesOfTetrahedron, double sign,
+                             StVKTensorMass& model);
 
 /// f -= dW/dU at displacements u (one per point): the elastic forces of eq. 15.
 void addStVKForce(const StVKTensorMass& model, std::span<const Eigen::Vector3d> u,

@@ -85,7 +85,15 @@ bool StandardTetrahedralFEMForceField::readMaterial(bool atInit) {
 
 bool StandardTetrahedralFEMForceField::refresh() {
   if (m_mesh.changed(*mstate())) {
-    init();
+    // Tetrahedra removed (cutting): their elements go, the others move with the topology's
+    // renumbering. Otherwise start again.
+    const bool followed =
+        m_ready && m_mesh.followRemovals(*mstate(), [this](const TopologyChange& change, auto) {
+          applyRemoval(m_elements, change.tetrahedra.removed);
+          applyRemoval(m_points, change.tetrahedra.removed);
+          applyRemoval(m_inverted, change.tetrahedra.removed);
+        });
+    if (!followed) init();
   } else if (m_ready && d_materialName.version() + d_parameterSet.version() +
                                 d_youngModulus.version() + d_poissonRatio.version() !=
                             m_materialVersion) {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "SolidMechanics/kernels/IsotropicMaterial.h"
@@ -34,6 +35,14 @@ class TetrahedralMesh {
   /// True when the topology's elements or the state's size changed since read().
   bool changed(const State& state) const;
 
+  /// Follows the tetrahedra removed at run time since read() (cutting: the changes the
+  /// topology logged, topology/TopologyChange.h): for each change, removes the tetrahedra from
+  /// tetrahedra() and shapes() (SOFA's renumbering), then calls follow(change, shapes of the
+  /// removed tetrahedra in removal order). Returns false, changing nothing, when the changes
+  /// cannot be followed (not logged, or the state's size changed): read() again then.
+  template <class Follow>
+  bool followRemovals(const State& state, Follow&& follow);
+
   const Topology& topology() const { return *m_topology; }
   std::size_t pointCount() const { return m_pointCount; }
   const std::vector<Tetrahedron>& tetrahedra() const { return m_tetrahedra; }
@@ -51,6 +60,32 @@ class TetrahedralMesh {
   std::vector<fem::TetrahedronShape> m_shapes;
   std::vector<Vec3d> m_restPositions;
 };
+
+template <class Follow>
+bool TetrahedralMesh::followRemovals(const State& state, Follow&& follow) {
+  if (!m_topology || state.size() != m_pointCount) return false;
+  const auto changes = m_topology->changesSince(m_revision);
+  if (!changes) return false;
+  std::size_t count = m_tetrahedra.size();
+  for (const TopologyChange& change : *changes) {
+    if (change.tetrahedra.sizeBefore != count) return false;
+    count = change.tetrahedra.sizeAfter;
+  }
+  std::vector<fem::TetrahedronShape> removedShapes;
+  for (const TopologyChange& change : *changes) {
+    removedShapes.clear();
+    for (Index t : change.tetrahedra.removed) {
+      removedShapes.push_back(m_shapes[t]);
+      m_shapes[t] = m_shapes.back();
+      m_shapes.pop_back();
+      m_tetrahedra[t] = m_tetrahedra.back();
+      m_tetrahedra.pop_back();
+    }
+    follow(change, std::span<const fem::TetrahedronShape>(removedShapes));
+  }
+  m_revision = m_topology->revision();
+  return true;
+}
 
 /// The Lame parameters of youngModulus and poissonRatio, or nothing after reporting, on
 /// `owner` and naming the field, a value out of range (E > 0, -1 < nu < 0.5): an error at init,

@@ -22,6 +22,8 @@ bool TetrahedralStVKTensorMassForceField::build(bool atInit) {
       readIsotropicMaterial(*this, d_youngModulus.value(), d_poissonRatio.value(), atInit);
   if (!lame) return false;
   tensormass::buildStVKTensorMass(m_mesh.tensorMassMesh(), *lame, m_model);
+  m_uses.build(m_mesh.tetrahedra(), m_model.edges, m_model.triangles);
+  m_lame = *lame;
   m_hessian.reset(m_mesh.pointCount(), m_model.edges);
   m_hessianCurrent = false;
   // Until the first addForce, the tangent is taken at the rest shape.
@@ -31,7 +33,19 @@ bool TetrahedralStVKTensorMassForceField::build(bool atInit) {
 
 bool TetrahedralStVKTensorMassForceField::refresh() {
   if (m_mesh.changed(*mstate())) {
-    m_ready = m_mesh.read(*this, l_topology, *mstate()) && build(true);
+    // Tetrahedra removed (cutting): subtract their terms. Otherwise start again.
+    const bool followed =
+        m_ready &&
+        m_mesh.followRemovals(*mstate(), [this](const TopologyChange& change, auto shapes) {
+          tensormass::removeFromStVKTensorMass(change.tetrahedra.removed, shapes, m_lame,
+                                               change.freedPoints, m_model, m_uses);
+        });
+    if (followed) {
+      m_hessian.reset(m_mesh.pointCount(), m_model.edges);
+      m_hessianCurrent = false;
+    } else {
+      m_ready = m_mesh.read(*this, l_topology, *mstate()) && build(true);
+    }
   } else if (m_ready && (d_youngModulus.version() != m_youngModulusVersion ||
                          d_poissonRatio.version() != m_poissonRatioVersion)) {
     build(false);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "TensorMass/kernels/StVKTensorMass.h"
+#include "TensorMass/kernels/TensorMassRemoval.h"
 #include "TetrahedralMesh.h"
 #include "simulation/ForceField.h"
 
@@ -60,6 +61,8 @@ class TetrahedralStVKTensorMassForceField final : public ForceField<Vec3Types> {
   tensormass::VertexEdgeTensors m_hessian;
   bool m_hessianCurrent = false;
   std::vector<Vec3d> m_displacement;  // U = x - X of the last addForce
+  tensormass::PrimitiveUses m_uses;   ///< edges (and triangles) by their vertices, for cutting
+  fem::LameParameters m_lame{};       ///< the material the tensors were built with
   std::uint64_t m_youngModulusVersion = 0;
   std::uint64_t m_poissonRatioVersion = 0;
   bool m_ready = false;

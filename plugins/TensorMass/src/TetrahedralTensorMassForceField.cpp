@@ -23,14 +23,23 @@ bool TetrahedralTensorMassForceField::build(bool atInit) {
       readIsotropicMaterial(*this, d_youngModulus.value(), d_poissonRatio.value(), atInit);
   if (!lame) return false;
   tensormass::buildLinearTensorMass(m_mesh.tensorMassMesh(), *lame, m_tensors);
+  m_uses.build(m_mesh.tetrahedra(), m_tensors.edges, {});
+  m_lame = *lame;
   m_displacement.assign(m_mesh.pointCount(), Vec3d::Zero());
   return true;
 }
 
 bool TetrahedralTensorMassForceField::refresh() {
   if (m_mesh.changed(*mstate())) {
-    // The mesh changed: start again (allocates, as a topological change does).
-    m_ready = m_mesh.read(*this, l_topology, *mstate()) && build(true);
+    // Tetrahedra removed (cutting): subtract their tensors. Otherwise the mesh changed: start
+    // again (allocates, as a topological change does).
+    const bool followed =
+        m_ready &&
+        m_mesh.followRemovals(*mstate(), [this](const TopologyChange& change, auto shapes) {
+          tensormass::removeFromLinearTensorMass(change.tetrahedra.removedElements, shapes, m_lame,
+                                                 change.freedPoints, m_tensors, m_uses);
+        });
+    if (!followed) m_ready = m_mesh.read(*this, l_topology, *mstate()) && build(true);
   } else if (m_ready && (d_youngModulus.version() != m_youngModulusVersion ||
                          d_poissonRatio.version() != m_poissonRatioVersion)) {
     build(false);  // an invalid change keeps the previous tensors

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "TensorMass/kernels/TensorMassRemoval.h"
 #include "TensorMass/kernels/VertexEdgeTensors.h"
 #include "TetrahedralMesh.h"
 #include "simulation/ForceField.h"
@@ -58,6 +59,8 @@ class TetrahedralTensorMassForceField final : public ForceField<Vec3Types> {
   TetrahedralMesh m_mesh;
   tensormass::VertexEdgeTensors m_tensors;
   std::vector<Vec3d> m_displacement;  // scratch: U = x - X
+  tensormass::PrimitiveUses m_uses;   ///< edges (and triangles) by their vertices, for cutting
+  fem::LameParameters m_lame{};       ///< the material the tensors were built with
   std::uint64_t m_youngModulusVersion = 0;
   std::uint64_t m_poissonRatioVersion = 0;
   bool m_ready = false;

@@ -27,7 +27,14 @@ fem::TetrahedronVectors TetrahedralVolumePenaltyForceField::gather(const VecCoor
 void TetrahedralVolumePenaltyForceField::addForce(const MechanicalParams&, VecDeriv& f,
                                                   const VecCoord& x, const VecDeriv&) {
   if (!mstate()) return;
-  if (m_mesh.changed(*mstate())) init();
+  if (m_mesh.changed(*mstate())) {
+    // Tetrahedra removed (cutting): their rest volumes go with them. Otherwise start again.
+    const bool followed =
+        m_ready && m_mesh.followRemovals(*mstate(), [this](const TopologyChange& change, auto) {
+          applyRemoval(m_restVolumes, change.tetrahedra.removed);
+        });
+    if (!followed) init();
+  }
   if (!m_ready) return;
   m_positions.assign(x.begin(), x.end());
   const double gamma = d_stiffness.value();
