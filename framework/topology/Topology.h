@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "core/Base.h"
+#include "core/Link.h"
 #include "core/Types.h"
 #include "topology/MeshAdjacency.h"
 #include "topology/TopologyChange.h"
@@ -135,5 +136,10 @@ class Topology : public Base {
   std::vector<TopologyChange> m_changes;  ///< the last changes, oldest first
   bool m_reportedFreedPoints = false;
 };
+
+/// The tetrahedral topology a force field works on: the link when given (an error if it has no
+/// tetrahedra), else, from the owner's node up, the last topology of the first node that holds
+/// tetrahedra. Errors go to `owner`, field "topology"; nullptr after one.
+const Topology* findTetrahedralTopology(Base& owner, const Link<Topology>& link);
 
 }  // namespace stroma

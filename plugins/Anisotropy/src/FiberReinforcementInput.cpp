@@ -46,27 +46,6 @@ std::string describeElements(const std::vector<std::size_t>& indices) {
   return text;
 }
 
-const Topology* findTetrahedralTopology(Base& owner, const Link<Topology>& link) {
-  if (link) {
-    if (link->tetrahedra().empty()) {
-      owner.msgError("the topology " + link->path() + " has no tetrahedra", "topology");
-      return nullptr;
-    }
-    return link.get();
-  }
-  for (const Node* node = owner.node(); node; node = node->parent()) {
-    const Topology* found = nullptr;
-    for (const Topology* topology : node->getAll<Topology>())
-      if (!topology->tetrahedra().empty()) found = topology;
-    if (found) return found;
-  }
-  owner.msgError(
-      "needs a topology with tetrahedra (TetrahedronSetTopologyContainer, MeshTopology, or a "
-      "grid through Hexa2TetraTopologicalMapping) in its node or above, or a 'topology' link",
-      "topology");
-  return nullptr;
-}
-
 bool computeRestShapes(Base& owner, const Topology& topology,
                        const std::vector<Vec3d>& restPositions,
                        std::vector<fem::TetrahedronShape>& shapes) {

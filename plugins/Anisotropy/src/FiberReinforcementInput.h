@@ -22,11 +22,6 @@ std::string formatNumber(double value);
 /// "3, 17, 42" or "3, 17, 42, ... (12 in all)": element indices for messages, the first 10.
 std::string describeElements(const std::vector<std::size_t>& indices);
 
-/// The topology: the link when given (an error if it has no tetrahedra), else, from the owner's
-/// node up, the last topology of the first node that holds tetrahedra. Errors go to `owner`,
-/// field "topology"; nullptr after one.
-const Topology* findTetrahedralTopology(Base& owner, const Link<Topology>& link);
-
 /// The rest shape of each tetrahedron of `topology` from the state's rest positions. Points out of
 /// range and flat tetrahedra are errors on `owner`, field "topology", naming the elements;
 /// returns false after one. Both orientations are accepted.

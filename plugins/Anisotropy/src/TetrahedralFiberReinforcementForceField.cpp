@@ -52,7 +52,7 @@ void TetrahedralFiberReinforcementForceField::report(bool atInit, const std::str
 }
 
 bool TetrahedralFiberReinforcementForceField::readMesh() {
-  m_topology = reinforcement::findTetrahedralTopology(*this, l_topology);
+  m_topology = findTetrahedralTopology(*this, l_topology);
   if (!m_topology) return false;
   m_tetrahedra = m_topology->tetrahedra();
   m_topologyRevision = m_topology->revision();

@@ -16,27 +16,6 @@ std::string number(double value) {
   return text;
 }
 
-const Topology* findTetrahedralTopology(Base& owner, const Link<Topology>& link) {
-  if (link) {
-    if (link->tetrahedra().empty()) {
-      owner.msgError("the topology " + link->path() + " has no tetrahedra", "topology");
-      return nullptr;
-    }
-    return link.get();
-  }
-  for (const Node* node = owner.node(); node; node = node->parent()) {
-    const Topology* found = nullptr;
-    for (const Topology* topology : node->getAll<Topology>())
-      if (!topology->tetrahedra().empty()) found = topology;
-    if (found) return found;
-  }
-  owner.msgError(
-      "needs a topology with tetrahedra (TetrahedronSetTopologyContainer, MeshTopology, or a "
-      "grid through Hexa2TetraTopologicalMapping) in its node or above, or a 'topology' link",
-      "topology");
-  return nullptr;
-}
-
 }  // namespace
 
 bool TetrahedralMesh::read(Base& owner, const Link<Topology>& link, const State& state) {
