@@ -112,8 +112,14 @@ void SparseGridTopology::adoptSurface() {
   d_hexahedra.setParent(nullptr, ignored);
 }
 
+const std::vector<SparseGridTopology::FinerLevel>& SparseGridTopology::finerLevels() const {
+  d_hexahedra.value();
+  return m_finerLevels;
+}
+
 void SparseGridTopology::clearOutputs() {
   m_grid = sparsegrid::SparseGrid{};
+  m_finerLevels.clear();
   d_position.setValue({});
   d_edges.setValue({});
   d_triangles.setValue({});
@@ -287,8 +293,14 @@ void SparseGridTopology::doUpdate() {
     clearOutputs();
     return;
   }
-  for (int level = 0; level < d_nbVirtualFinerLevels.value(); ++level)
-    m_grid = sparsegrid::coarsenSparseGrid(m_grid);
+  m_finerLevels.clear();
+  // The virtual finer levels are kept, with each coarse cell's children, for the components
+  // that condense from them (non-uniform elements).
+  for (int level = 0; level < d_nbVirtualFinerLevels.value(); ++level) {
+    m_finerLevels.push_back({std::move(m_grid), {}});
+    m_grid = sparsegrid::coarsenSparseGrid(m_finerLevels.back().grid,
+                                           &m_finerLevels.back().parentsChildren);
+  }
 
   // An open surface: the flood reached every cell, and the sub-cells around the surface too.
   const double keptVolume = double(m_grid.cells.size()) * m_grid.box.spacing.prod();

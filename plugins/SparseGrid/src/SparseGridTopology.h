@@ -113,6 +113,16 @@ class SparseGridTopology final : public Topology, public DataEngine {
   /// components that need more than the Topology lists (coarser levels: coarsenSparseGrid).
   const sparsegrid::SparseGrid& grid() const;
 
+  /// A virtual finer level (`nbVirtualFinerLevels`): its grid, and for each cell of the next
+  /// coarser level (the next FinerLevel, or grid() after the last) its 8 children in this one,
+  /// as coarsenSparseGrid gives them.
+  struct FinerLevel {
+    sparsegrid::SparseGrid grid;
+    std::vector<std::array<Index, 8>> parentsChildren;
+  };
+  /// The virtual finer levels, finest first (empty when nbVirtualFinerLevels = 0).
+  const std::vector<FinerLevel>& finerLevels() const;
+
  protected:
   void doUpdate() override;
 
@@ -127,6 +137,7 @@ class SparseGridTopology final : public Topology, public DataEngine {
   void clearOutputs();
 
   sparsegrid::SparseGrid m_grid;
+  std::vector<FinerLevel> m_finerLevels;
   std::vector<BaseData*> m_inputs;
   std::vector<std::uint64_t> m_builtVersions;  ///< input versions of the last build
   bool m_adopted = false;
