@@ -25,6 +25,7 @@
 #include "core/Link.h"
 #include "core/Types.h"
 #include "topology/MeshAdjacency.h"
+#include "topology/SparseGridLevels.h"
 #include "topology/TopologyChange.h"
 #include "topology/TopologyTypes.h"
 
@@ -69,6 +70,13 @@ class Topology : public Base {
   const std::vector<Quad>& quads() const { return d_quads.value(); }
   const std::vector<Tetrahedron>& tetrahedra() const { return d_tetrahedra.value(); }
   const std::vector<Hexahedron>& hexahedra() const { return d_hexahedra.value(); }
+
+  // --- Sparse grids (SparseGridTopology; null/empty for other topologies) -----------------
+  /// The grid whose hexahedra this topology holds: box, cells, types, filled fractions.
+  virtual const sparsegrid::SparseGrid* sparseGrid() const { return nullptr; }
+  /// Its virtual finer levels (`nbVirtualFinerLevels`), finest first, each with the children of
+  /// the next coarser level's cells (the last one's parents are sparseGrid()'s cells).
+  virtual std::span<const sparsegrid::FinerLevel> sparseGridFinerLevels() const { return {}; }
 
   /// The number of positions; without positions, 1 + the largest index any element uses
   /// (0 for an empty topology).

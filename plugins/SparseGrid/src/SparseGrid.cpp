@@ -82,16 +82,6 @@ TriangleBounds bounds(const Surface& surface, const Triangle& t) {
 
 }  // namespace
 
-std::size_t SparseGrid::count(CellType type) const {
-  return std::size_t(std::count(types.begin(), types.end(), type));
-}
-
-double SparseGrid::filledVolume() const {
-  double sum = 0;
-  for (double f : fractions) sum += f;
-  return sum * box.spacing.prod();
-}
-
 double estimateBuildBytes(const std::array<double, 3>& size, int samples) {
   const double cells = size[0] * size[1] * size[2];
   const double points = (size[0] + 1) * (size[1] + 1) * (size[2] + 1);

@@ -112,7 +112,7 @@ void SparseGridTopology::adoptSurface() {
   d_hexahedra.setParent(nullptr, ignored);
 }
 
-const std::vector<SparseGridTopology::FinerLevel>& SparseGridTopology::finerLevels() const {
+const std::vector<sparsegrid::FinerLevel>& SparseGridTopology::finerLevels() const {
   d_hexahedra.value();
   return m_finerLevels;
 }

@@ -112,16 +112,13 @@ class SparseGridTopology final : public Topology, public DataEngine {
   /// The grid as built (box, kept cells, types, fractions, points, hexahedra), for the
   /// components that need more than the Topology lists (coarser levels: coarsenSparseGrid).
   const sparsegrid::SparseGrid& grid() const;
+  const sparsegrid::SparseGrid* sparseGrid() const override { return &grid(); }
 
-  /// A virtual finer level (`nbVirtualFinerLevels`): its grid, and for each cell of the next
-  /// coarser level (the next FinerLevel, or grid() after the last) its 8 children in this one,
-  /// as coarsenSparseGrid gives them.
-  struct FinerLevel {
-    sparsegrid::SparseGrid grid;
-    std::vector<std::array<Index, 8>> parentsChildren;
-  };
   /// The virtual finer levels, finest first (empty when nbVirtualFinerLevels = 0).
-  const std::vector<FinerLevel>& finerLevels() const;
+  const std::vector<sparsegrid::FinerLevel>& finerLevels() const;
+  std::span<const sparsegrid::FinerLevel> sparseGridFinerLevels() const override {
+    return finerLevels();
+  }
 
  protected:
   void doUpdate() override;
@@ -137,7 +134,7 @@ class SparseGridTopology final : public Topology, public DataEngine {
   void clearOutputs();
 
   sparsegrid::SparseGrid m_grid;
-  std::vector<FinerLevel> m_finerLevels;
+  std::vector<sparsegrid::FinerLevel> m_finerLevels;
   std::vector<BaseData*> m_inputs;
   std::vector<std::uint64_t> m_builtVersions;  ///< input versions of the last build
   bool m_adopted = false;
