@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libtinyxml2-dev libtbb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libsuitesparse-dev   # CHOLMOD, for the optional Cholmod plugin
+  zlib1g-dev   # gzip/zlib-compressed NRRD and MetaImage volume images (SparseGrid)
   clang libclang-rt-14-dev   # libFuzzer and LeakSanitizer for the fuzz and leak tests
 )
 
