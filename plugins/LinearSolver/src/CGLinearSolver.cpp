@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "CGLinearSolver.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "DependentDofs.h"
+#include "core/Node.h"
 #include "simulation/MechanicalOperations.h"
 #include "simulation/Timing.h"
 
@@ -12,6 +15,18 @@ namespace stroma {
 namespace {
 bool isAssembledTemplate(const std::string& name) {
   return name.rfind("CompressedRowSparseMatrix", 0) == 0;
+}
+
+// The DependentDofs hooks (T-nodes) of the subtree on the system's independent states.
+void collectDependentDofs(const Node& node, const MechanicalOperations& mop,
+                          std::vector<DependentDofs*>& found) {
+  for (const auto& object : node.objects())
+    if (auto* hook = dynamic_cast<DependentDofs*>(object.get())) {
+      const auto& states = mop.independentStates();
+      if (std::find(states.begin(), states.end(), hook->dependentState()) != states.end())
+        found.push_back(hook);
+    }
+  for (const auto& child : node.children()) collectDependentDofs(*child, mop, found);
 }
 }  // namespace
 
@@ -40,6 +55,8 @@ LinearSolveReport CGLinearSolver::solve(MechanicalOperations& mop, const Mechani
 LinearSolveReport CGLinearSolver::solveMatrixFree(MechanicalOperations& mop,
                                                   const MechanicalParams& mp, VecId x, VecId rhs) {
   ScopedPhase phase(mop.timing(), "linearSolve");
+  std::vector<DependentDofs*> dependent;
+  collectDependentDofs(mop.node(), mop, dependent);
   LinearSolveReport report;
   const VecId r = mop.allocDeriv(), p = mop.allocDeriv(), q = mop.allocDeriv();
   const double normB = mop.norm(rhs);
@@ -49,6 +66,7 @@ LinearSolveReport CGLinearSolver::solveMatrixFree(MechanicalOperations& mop,
   }
   // r = rhs - A x
   if (d_warmStart.value()) {
+    for (DependentDofs* d : dependent) d->interpolateDependent(x);
     mop.computeMBKdx(mp, q, x);
     mop.projectResponse(q);
     mop.vOp(r, rhs, q, -1.0);
@@ -68,6 +86,7 @@ LinearSolveReport CGLinearSolver::solveMatrixFree(MechanicalOperations& mop,
       break;
     }
     if (report.iterations >= maxIterations) break;
+    for (DependentDofs* d : dependent) d->interpolateDependent(p);
     mop.computeMBKdx(mp, q, p);
     mop.projectResponse(q);
     const double den = mop.dot(p, q);
@@ -84,6 +103,7 @@ LinearSolveReport CGLinearSolver::solveMatrixFree(MechanicalOperations& mop,
     rho = rhoNext;
     ++report.iterations;
   }
+  for (DependentDofs* d : dependent) d->clearDependent(x);
   mop.freeVec(q);
   mop.freeVec(p);
   mop.freeVec(r);
