@@ -79,6 +79,8 @@ const KnownGap kKnownGaps[] = {
      "Links: SOFA also finds '@A/B' among the children of the ancestors"},
     {"", "'..' goes above the root node", "src",
      "the scene links above its root; SOFA only warns"},
+    {"SubsetTopology_refiningMesh.scn", "unknown attribute 'box_roi'", "box_roi",
+     "the scene gives BoxConstraint an attribute that SOFA's lacks too; SOFA only warns"},
 };
 
 const KnownGap* knownGap(const fs::path& file, const Message& m) {

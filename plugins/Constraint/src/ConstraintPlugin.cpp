@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "BoxConstraint.h"
 #include "FixedProjectiveConstraint.h"
 #include "LinearMovementProjectiveConstraint.h"
 #include "PartialFixedProjectiveConstraint.h"
@@ -14,6 +15,8 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .with<FixedProjectiveConstraint<Vec1Types>>("Vec1d")
       .with<FixedProjectiveConstraint<Rigid3Types>>("Rigid3d")
       .alias("FixedConstraint");
+  registry.add("BoxConstraint", "Fixes the points inside boxes by projection")
+      .with<BoxConstraint>("Vec3d");
   registry
       .add("PartialFixedProjectiveConstraint",
            "Fixes some directions of points or rigid frames by projection")
