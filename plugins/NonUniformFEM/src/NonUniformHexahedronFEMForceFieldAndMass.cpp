@@ -1,0 +1,299 @@
+// SPDX-License-Identifier: MIT
+#include "NonUniformHexahedronFEMForceFieldAndMass.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "SolidMechanics/kernels/CorotationalElement.h"
+#include "SolidMechanics/kernels/IsotropicMaterial.h"
+#include "core/Node.h"
+
+namespace stroma {
+
+namespace {
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+}  // namespace
+
+const Topology* NonUniformHexahedronFEMForceFieldAndMass::findSparseGrid() {
+  if (l_topology) {
+    if (!l_topology->sparseGrid()) {
+      msgError("the topology " + l_topology->path() +
+                   " is not a sparse grid: the non-uniform hexahedra are condensed from the "
+                   "levels of a SparseGridTopology",
+               "topology");
+      return nullptr;
+    }
+    return l_topology.get();
+  }
+  for (const Node* n = node(); n; n = n->parent())
+    for (const Topology* topology : n->getAll<Topology>())
+      if (topology->sparseGrid()) return topology;
+  msgError(
+      "needs a SparseGridTopology in its node or above, or a 'topology' link to one: the "
+      "non-uniform hexahedra are condensed from the levels of a sparse grid",
+      "topology");
+  return nullptr;
+}
+
+void NonUniformHexahedronFEMForceFieldAndMass::init() {
+  Mass<Vec3Types>::init();
+  m_ready = false;
+  if (!mstate()) return;  // Mass::init reported it
+  m_topology = findSparseGrid();
+  if (!m_topology) {
+    setInvalid();
+    return;
+  }
+  const sparsegrid::SparseGrid& grid = *m_topology->sparseGrid();
+  m_hexahedra.assign(m_topology->hexahedra().begin(), m_topology->hexahedra().end());
+  if (m_hexahedra.size() != grid.cells.size()) {
+    msgError("the topology " + m_topology->path() + " has " + std::to_string(m_hexahedra.size()) +
+                 " hexahedra for " + std::to_string(grid.cells.size()) + " grid cells",
+             "topology");
+    setInvalid();
+    return;
+  }
+  const std::size_t points = mstate()->size();
+  for (std::size_t e = 0; e < m_hexahedra.size(); ++e)
+    for (Index v : m_hexahedra[e])
+      if (v >= points) {
+        msgError("hexahedron " + std::to_string(e) + " uses point " + std::to_string(v) +
+                     " but the mechanical state has " + std::to_string(points) + " points",
+                 "topology");
+        setInvalid();
+        return;
+      }
+  if (!computeConstants()) {
+    setInvalid();
+    return;
+  }
+  const auto& x = mstate()->readCoord(VecId::position());
+  m_rotations.resize(m_elements.size());
+  for (std::size_t e = 0; e < m_elements.size(); ++e)
+    m_rotations[e] = fem::computeRotation(rotationMethod(), m_elements[e], gather(x, e));
+  m_ready = true;
+}
+
+bool NonUniformHexahedronFEMForceFieldAndMass::computeCellMaterials(
+    std::span<const sparsegrid::FinerLevel> levels) {
+  const sparsegrid::SparseGrid& finest =
+      levels.empty() ? *m_topology->sparseGrid() : levels.front().grid;
+  const std::size_t count = finest.cells.size();
+  m_cellMaterials.assign(count, fem::CellMaterial{1, d_youngModulus.value(), d_density.value()});
+  for (std::size_t c = 0; c < count; ++c) m_cellMaterials[c].fraction = finest.fractions[c];
+
+  return true;
+}
+
+bool NonUniformHexahedronFEMForceFieldAndMass::computeConstants() {
+  const double E = d_youngModulus.value(), nu = d_poissonRatio.value(), rho = d_density.value();
+  if (!(E > 0) || !std::isfinite(E)) {
+    msgError("expected a Young's modulus > 0, got " + number(E), "youngModulus");
+    return false;
+  }
+  if (!fem::isValidIsotropicMaterial(E, nu)) {
+    msgError("expected -1 < poissonRatio < 0.5 (0.5 is incompressible), got " + number(nu),
+             "poissonRatio");
+    return false;
+  }
+  if (!(rho > 0) || !std::isfinite(rho)) {
+    msgError("expected a density > 0, got " + number(rho), "density");
+    return false;
+  }
+  const auto available = m_topology->sparseGridFinerLevels();
+  const int used = d_nbVirtualFinerLevels.value();
+  if (used < 0 || std::size_t(used) > available.size()) {
+    msgError("asks for " + std::to_string(used) + " finer levels but the topology " +
+                 m_topology->path() + " keeps " + std::to_string(available.size()) +
+                 ": set nbVirtualFinerLevels=\"" + std::to_string(used) +
+                 "\" on the SparseGridTopology too",
+             "nbVirtualFinerLevels");
+    return false;
+  }
+  // The coarsest `used` levels: the last one's parents are the simulated cells.
+  const auto levels = available.last(std::size_t(used));
+  if (!computeCellMaterials(levels)) return false;
+
+  const auto& rest = mstate()->readCoord(VecId::restPosition());
+  const std::size_t count = m_hexahedra.size();
+  m_elements.assign(count, fem::CorotationalHexahedron{});
+  m_elementMasses.assign(count, fem::Matrix8d::Zero());
+  m_vertexMasses.assign(mstate()->size(), 0.0);
+  const fem::Matrix6d unitC = fem::computeElasticityMatrix(fem::computeLameParameters(1.0, nu));
+  const auto material = [this](Index cell) { return m_cellMaterials[cell]; };
+  std::vector<std::size_t> degenerate;
+  for (std::size_t e = 0; e < count; ++e) {
+    const fem::HexahedronVectors X = gather(rest, e);
+    fem::CondensedHexahedron condensed;
+    // The rest frame and centre gradients of the simulated hexahedron; its Ke is replaced.
+    if (fem::computeCorotationalHexahedron(X, unitC, m_elements[e]) != fem::ElementStatus::ok ||
+        fem::condenseHexahedron(X, Index(e), levels, material, nu, condensed) !=
+            fem::ElementStatus::ok) {
+      degenerate.push_back(e);
+      continue;
+    }
+    m_elements[e].stiffness = condensed.stiffness;
+    m_elementMasses[e] = condensed.mass;
+    const fem::Vector8d rowSums = condensed.mass.rowwise().sum();
+    for (int i = 0; i < 8; ++i) m_vertexMasses[m_hexahedra[e][i]] += rowSums[i];
+  }
+  if (!degenerate.empty()) {
+    std::string list;
+    for (std::size_t k = 0; k < degenerate.size() && k < 10; ++k)
+      list += (k ? ", " : "") + std::to_string(degenerate[k]);
+    msgError("degenerate rest shape (zero volume) of hexahedra " + list +
+                 (degenerate.size() > 10 ? ", ..." : ""),
+             "topology");
+    return false;
+  }
+  double total = 0;
+  for (double m : m_vertexMasses) total += m;
+  d_vertexMass.setValue(m_vertexMasses);
+  d_totalMass.setValue(total);
+  m_materialVersion = d_youngModulus.version() + d_poissonRatio.version() + d_density.version() +
+                      d_nbVirtualFinerLevels.version();
+  return true;
+}
+
+void NonUniformHexahedronFEMForceFieldAndMass::refresh() {
+  const std::uint64_t version = d_youngModulus.version() + d_poissonRatio.version() +
+                                d_density.version() + d_nbVirtualFinerLevels.version();
+  if (version == m_materialVersion) return;
+  // Keep the previous constants when the new material is refused (reported by computeConstants).
+  auto elements = m_elements;
+  auto masses = m_elementMasses;
+  auto vertexMasses = m_vertexMasses;
+  if (!computeConstants()) {
+    m_elements = std::move(elements);
+    m_elementMasses = std::move(masses);
+    m_vertexMasses = std::move(vertexMasses);
+    m_materialVersion = version;
+  }
+}
+
+fem::HexahedronVectors NonUniformHexahedronFEMForceFieldAndMass::gather(std::span<const Vec3d> v,
+                                                                        std::size_t e) const {
+  fem::HexahedronVectors result;
+  for (int i = 0; i < 8; ++i) result.col(i) = v[m_hexahedra[e][i]];
+  return result;
+}
+
+void NonUniformHexahedronFEMForceFieldAndMass::addForce(const MechanicalParams&, VecDeriv& f,
+                                                        const VecCoord& x, const VecDeriv&) {
+  if (!m_ready) return;
+  refresh();
+  const fem::RotationMethod method = rotationMethod();
+  for (std::size_t e = 0; e < m_elements.size(); ++e) {
+    const fem::HexahedronVectors xe = gather(x, e);
+    m_rotations[e] = fem::computeRotation(method, m_elements[e], xe);
+    const fem::HexahedronVectors fe = fem::computeForce(m_elements[e], m_rotations[e], xe);
+    for (int i = 0; i < 8; ++i) f[m_hexahedra[e][i]] += fe.col(i);
+  }
+  const Vec3d g = node()->gravity();
+  for (std::size_t i = 0; i < m_vertexMasses.size() && i < f.size(); ++i)
+    f[i] += m_vertexMasses[i] * g;
+}
+
+void NonUniformHexahedronFEMForceFieldAndMass::addDForce(const MechanicalParams& mp, VecDeriv& df,
+                                                         const VecDeriv& dx) {
+  if (!m_ready || mp.kFactor == 0) return;
+  for (std::size_t e = 0; e < m_elements.size(); ++e) {
+    const fem::HexahedronVectors dfe =
+        fem::computeDForce(m_elements[e], m_rotations[e], gather(dx, e));
+    for (int i = 0; i < 8; ++i) df[m_hexahedra[e][i]] += mp.kFactor * dfe.col(i);
+  }
+}
+
+void NonUniformHexahedronFEMForceFieldAndMass::addKToMatrix(const MechanicalParams& mp,
+                                                            MatrixAccumulator& matrix,
+                                                            std::size_t offset) {
+  if (!m_ready || mp.kFactor == 0) return;
+  for (std::size_t e = 0; e < m_elements.size(); ++e) {
+    const fem::Matrix24d K = fem::computeStiffness(m_elements[e], m_rotations[e]);
+    const Hexahedron& nodes = m_hexahedra[e];
+    for (int i = 0; i < 8; ++i)
+      for (int j = 0; j < 8; ++j)
+        matrix.addBlock(offset + 3 * std::size_t{nodes[i]}, offset + 3 * std::size_t{nodes[j]},
+                        -mp.kFactor * K.block<3, 3>(3 * i, 3 * j));
+  }
+}
+
+double NonUniformHexahedronFEMForceFieldAndMass::potentialEnergy(const MechanicalParams&,
+                                                                 const VecCoord& x) const {
+  if (!m_ready) return 0;
+  double energy = 0;
+  for (std::size_t e = 0; e < m_elements.size(); ++e) {
+    const fem::HexahedronVectors xe = gather(x, e);
+    energy += fem::computeEnergy(m_elements[e],
+                                 fem::computeRotation(rotationMethod(), m_elements[e], xe), xe);
+  }
+  const Vec3d g = node()->gravity();
+  for (std::size_t i = 0; i < m_vertexMasses.size() && i < x.size(); ++i)
+    energy -= m_vertexMasses[i] * g.dot(x[i]);
+  return energy;
+}
+
+void NonUniformHexahedronFEMForceFieldAndMass::addMDx(VecDeriv& f, const VecDeriv& dx,
+                                                      double factor) {
+  if (!m_ready || factor == 0) return;
+  if (d_lumpedMass.value()) {
+    for (std::size_t i = 0; i < m_vertexMasses.size() && i < f.size(); ++i)
+      f[i] += (factor * m_vertexMasses[i]) * dx[i];
+    return;
+  }
+  for (std::size_t e = 0; e < m_elements.size(); ++e) {
+    // (M (x) I_3) dx, node-major: column i = sum_j M_ij dx_j (M symmetric).
+    const fem::HexahedronVectors corner = gather(dx, e) * m_elementMasses[e];
+    for (int i = 0; i < 8; ++i) f[m_hexahedra[e][i]] += factor * corner.col(i);
+  }
+}
+
+void NonUniformHexahedronFEMForceFieldAndMass::accFromF(VecDeriv& a, const VecDeriv& f) {
+  // Exact for the lumped mass (isDiagonal()); the lumped inverse otherwise.
+  for (std::size_t i = 0; i < m_vertexMasses.size() && i < a.size(); ++i)
+    a[i] = m_vertexMasses[i] > 0 ? Vec3d(f[i] / m_vertexMasses[i]) : Vec3d::Zero();
+}
+
+void NonUniformHexahedronFEMForceFieldAndMass::addMToMatrix(MatrixAccumulator& matrix,
+                                                            std::size_t offset, double factor) {
+  if (!m_ready || factor == 0) return;
+  if (d_lumpedMass.value()) {
+    for (std::size_t i = 0; i < m_vertexMasses.size(); ++i)
+      for (std::size_t k = 0; k < 3; ++k)
+        matrix.add(offset + 3 * i + k, offset + 3 * i + k, factor * m_vertexMasses[i]);
+    return;
+  }
+  for (std::size_t e = 0; e < m_elements.size(); ++e) {
+    const Hexahedron& nodes = m_hexahedra[e];
+    for (int i = 0; i < 8; ++i)
+      for (int j = 0; j < 8; ++j) {
+        const double value = factor * m_elementMasses[e](i, j);
+        for (std::size_t k = 0; k < 3; ++k)
+          matrix.add(offset + 3 * std::size_t{nodes[i]} + k, offset + 3 * std::size_t{nodes[j]} + k,
+                     value);
+      }
+  }
+}
+
+double NonUniformHexahedronFEMForceFieldAndMass::kineticEnergy(const VecDeriv& v) const {
+  if (!m_ready) return 0;
+  double e = 0;
+  if (d_lumpedMass.value()) {
+    for (std::size_t i = 0; i < m_vertexMasses.size() && i < v.size(); ++i)
+      e += m_vertexMasses[i] * v[i].squaredNorm();
+  } else {
+    for (std::size_t k = 0; k < m_elements.size(); ++k) {
+      const fem::HexahedronVectors ve = gather(v, k);
+      e += (ve * m_elementMasses[k]).cwiseProduct(ve).sum();
+    }
+  }
+  return 0.5 * e;
+}
+
+}  // namespace stroma
