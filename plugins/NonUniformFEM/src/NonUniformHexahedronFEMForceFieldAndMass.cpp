@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "ImageMaterial.h"
 #include "SolidMechanics/kernels/CorotationalElement.h"
 #include "SolidMechanics/kernels/IsotropicMaterial.h"
+#include "TransferFunction.h"
 #include "core/Node.h"
 
 namespace stroma {
@@ -88,6 +90,52 @@ bool NonUniformHexahedronFEMForceFieldAndMass::computeCellMaterials(
   m_cellMaterials.assign(count, fem::CellMaterial{1, d_youngModulus.value(), d_density.value()});
   for (std::size_t c = 0; c < count; ++c) m_cellMaterials[c].fraction = finest.fractions[c];
 
+  const bool hasImage = !d_imageFile.value().original.empty();
+  const bool hasTransfer =
+      !d_youngModulusTransfer.value().empty() || !d_densityTransfer.value().empty();
+  if (!hasImage) {
+    if (hasTransfer)
+      msgWarning(
+          "a transfer function is given without an image: youngModulus and density "
+          "apply everywhere",
+          d_youngModulusTransfer.value().empty() ? "densityTransfer" : "youngModulusTransfer");
+    return true;
+  }
+  std::optional<nonuniform::TransferFunction> toYoung, toDensity;
+  std::string why;
+  if (!d_youngModulusTransfer.value().empty()) {
+    toYoung = nonuniform::TransferFunction::parse(d_youngModulusTransfer.value(), 0.0, true, why);
+    if (!toYoung) {
+      msgError("Young's modulus transfer function: " + why, "youngModulusTransfer");
+      return false;
+    }
+  }
+  if (!d_densityTransfer.value().empty()) {
+    toDensity = nonuniform::TransferFunction::parse(d_densityTransfer.value(), 0.0, false, why);
+    if (!toDensity) {
+      msgError("density transfer function: " + why, "densityTransfer");
+      return false;
+    }
+  }
+  if (!toYoung && !toDensity)
+    msgWarning(
+        "an image is given without youngModulusTransfer or densityTransfer: it is not "
+        "used",
+        "imageFile");
+  image::VolumeImage volume;
+  if (!image::readVolumeImage(d_imageFile.value().path(), volume, why)) {
+    msgError("cannot read the image: " + why, "imageFile");
+    return false;
+  }
+  // Each finest cell: the transfer of the mean image value over the cell (in the grid's frame).
+  for (std::size_t c = 0; c < count; ++c) {
+    const auto ijk = finest.box.cellCoordinates(finest.cells[c]);
+    const Vec3d lower =
+        finest.box.origin + Vec3d(ijk[0], ijk[1], ijk[2]).cwiseProduct(finest.box.spacing);
+    const double value = nonuniform::meanImageValue(volume, lower, lower + finest.box.spacing);
+    if (toYoung) m_cellMaterials[c].youngModulus = (*toYoung)(value);
+    if (toDensity) m_cellMaterials[c].density = (*toDensity)(value);
+  }
   return true;
 }
 
@@ -157,13 +205,16 @@ bool NonUniformHexahedronFEMForceFieldAndMass::computeConstants() {
   d_vertexMass.setValue(m_vertexMasses);
   d_totalMass.setValue(total);
   m_materialVersion = d_youngModulus.version() + d_poissonRatio.version() + d_density.version() +
-                      d_nbVirtualFinerLevels.version();
+                      d_nbVirtualFinerLevels.version() + d_youngModulusTransfer.version() +
+                      d_densityTransfer.version() + d_imageFile.version();
   return true;
 }
 
 void NonUniformHexahedronFEMForceFieldAndMass::refresh() {
   const std::uint64_t version = d_youngModulus.version() + d_poissonRatio.version() +
-                                d_density.version() + d_nbVirtualFinerLevels.version();
+                                d_density.version() + d_nbVirtualFinerLevels.version() +
+                                d_youngModulusTransfer.version() + d_densityTransfer.version() +
+                                d_imageFile.version();
   if (version == m_materialVersion) return;
   // Keep the previous constants when the new material is refused (reported by computeConstants).
   auto elements = m_elements;

@@ -62,6 +62,28 @@ class NonUniformHexahedronFEMForceFieldAndMass final : public Mass<Vec3Types> {
       "SparseGridTopology's nbVirtualFinerLevels; 0: each hexahedron is one full element "
       "weighted by its filled fraction).",
       {.min = 0.0, .max = 8.0}};
+  Data<FileName> d_imageFile{this,
+                             "imageFile",
+                             {},
+                             "Volume image (MetaImage .mhd/.mha, NRRD .nrrd/.nhdr), in the frame "
+                             "of the grid, whose values give each finest cell its material "
+                             "through youngModulusTransfer and densityTransfer.",
+                             {.autoLink = false}};
+  Data<std::vector<double>> d_youngModulusTransfer{
+      this,
+      "youngModulusTransfer",
+      {},
+      "Piecewise-linear map 'imageValue0 E0 imageValue1 E1 ...' (increasing image values, "
+      "E > 0, constant beyond the ends) from the mean image value of a finest cell to its "
+      "Young's modulus; empty: youngModulus everywhere.",
+      {.unit = "Pa"}};
+  Data<std::vector<double>> d_densityTransfer{
+      this,
+      "densityTransfer",
+      {},
+      "Piecewise-linear map 'imageValue0 rho0 imageValue1 rho1 ...' (rho >= 0) from the mean "
+      "image value of a finest cell to its density; empty: density everywhere.",
+      {.unit = "kg/m^3"}};
   Link<Topology> l_topology{this, "topology",
                             "The SparseGridTopology (default: the node's or above)."};
   Data<std::vector<double>> d_vertexMass{

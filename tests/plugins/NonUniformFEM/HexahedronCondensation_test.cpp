@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "ImageMaterial.h"
 #include "SolidMechanics/kernels/IsotropicMaterial.h"
 #include "TransferFunction.h"
 
@@ -232,6 +233,31 @@ TEST(TransferFunction, RefusesBadTablesWithTheReason) {
   const std::vector<double> zero{0, 0, 1, 10};
   EXPECT_FALSE(TransferFunction::parse(zero, 0.0, true, why));
   EXPECT_TRUE(TransferFunction::parse(zero, 0.0, false, why)) << why;  // a zero density is fine
+}
+
+}  // namespace
+}  // namespace stroma::nonuniform
+
+namespace stroma::nonuniform {
+namespace {
+
+TEST(MeanImageValue, AveragesTheVoxelsCentredInTheCellElseTakesTheNearest) {
+  image::VolumeImage volume;
+  volume.size = {4, 4, 4};
+  volume.spacing = Vec3d(1, 2, 0.5);
+  volume.origin = Vec3d(10, 20, 30);  // centre of voxel (0, 0, 0)
+  volume.values.resize(64);
+  for (int k = 0; k < 4; ++k)
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i) volume.at(i, j, k) = i + 10 * j + 100 * k;
+  // Centres of voxels 1..2 on each axis: the mean of a linear field is its value at the middle.
+  const Vec3d lower = volume.voxelCenter(1, 1, 1) - 0.5 * volume.spacing;
+  EXPECT_DOUBLE_EQ(meanImageValue(volume, lower, lower + 2 * volume.spacing), 1.5 + 15 + 150);
+  // A cell smaller than a voxel, no centre inside: the voxel nearest to its centre.
+  const Vec3d inside = volume.voxelCenter(2, 1, 3) + 0.2 * volume.spacing;
+  EXPECT_DOUBLE_EQ(meanImageValue(volume, inside, inside + 0.1 * volume.spacing), 2 + 10 + 300);
+  // Outside the image: the nearest voxel on its border.
+  EXPECT_DOUBLE_EQ(meanImageValue(volume, Vec3d(-100, -100, -100), Vec3d(-99, -99, -99)), 0);
 }
 
 }  // namespace

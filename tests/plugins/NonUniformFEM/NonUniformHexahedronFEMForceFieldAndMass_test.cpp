@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Sparse>
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -264,6 +266,116 @@ TEST(NonUniformHexahedronFEMForceFieldAndMass, SofasSceneWithoutItsCollisionComp
   double drop = 0;
   for (std::size_t i = 2; i < x.size(); i += 3) drop += (rest[i] - x[i]) / double(x.size() / 3);
   EXPECT_NEAR(drop, 0.5 * 9.81 * 36, 0.05 * 0.5 * 9.81 * 36);
+}
+
+// --- Material from a volume image -------------------------------------------------------------
+
+class ImageMaterial : public SceneFixture {
+ protected:
+  /// A MetaImage of 16 x 2 x 2 voxels of 0.5 covering [0, 8] x [0, 1] x [0, 1]: value 0 for
+  /// x < 4, 255 beyond. Returns the header's path.
+  std::string writeTwoMaterialImage() {
+    std::string bytes;
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 16; ++i) bytes += char(i < 8 ? 0 : 255);
+    write("bar.raw", bytes);
+    return write("bar.mhd",
+                 "ObjectType = Image\nNDims = 3\nDimSize = 16 2 2\nElementSpacing = 0.5 0.5 0.5\n"
+                 "Offset = 0.25 0.25 0.25\nElementType = MET_UCHAR\nElementDataFile = bar.raw\n");
+  }
+  /// A bar [0, 8] x [0, 1] x [0, 1] in 8 x 1 x 1 cells, the end x = 0 fixed, 4 N pulling the
+  /// end x = 8 (1 N on each corner), statically solved; `material` is the component's material
+  /// attributes.
+  std::string barScene(const std::string& material, int levels = 0) {
+    const std::string L = "nbVirtualFinerLevels=\"" + std::to_string(levels) + "\" ";
+    return "<Node name=\"root\" gravity=\"0 0 0\" dt=\"1\">\n<Node name=\"body\">\n"
+           "<StaticSolver newton_iterations=\"3\"/>\n<SparseLDLSolver/>\n"
+           "<SparseGridTopology name=\"grid\" n=\"9 2 2\" min=\"0 0 0\" max=\"8 1 1\" " +
+           L + surfaceAttributes(boxSurface(Vec3d::Zero(), Vec3d(8, 1, 1))) +
+           "/>\n<MechanicalObject name=\"dofs\"/>\n"
+           "<NonUniformHexahedronFEMForceFieldAndMass name=\"fem\" method=\"small\" "
+           "poissonRatio=\"0\" " +
+           L + material +
+           "/>\n<FixedProjectiveConstraint indices=\"0 1 2 3\"/>\n"
+           "<ConstantForceField indices=\"32 33 34 35\" force=\"1 0 0\"/>\n</Node>\n</Node>\n";
+  }
+};
+
+TEST_F(ImageMaterial, TwoMaterialBarInTractionIsTwoSpringsInSeries) {
+  // Poisson ratio 0: the trilinear cells of a bar one cell thick in uniform traction carry the
+  // 1D field exactly (uniform strain per cell, no lateral stress), so each cell is a spring of
+  // stiffness E_i phi_i A / h in series: u(x_k) = F sum_{i < k} h / (E_i phi_i A), phi_i the
+  // cell's filled fraction (read from the grid). The image gives E = 1000 Pa to the half x < 4
+  // (value 0) and 5000 Pa to the other (value 255); the density transfer 100 and 300 kg/m^3.
+  const std::string image = writeTwoMaterialImage();
+  // Without finer levels, and condensed from one level of 16 x 2 x 2 cells (one voxel each):
+  // full children of one material condense exactly to the coarse element.
+  for (int levels : {0, 1}) {
+    SCOPED_TRACE(levels);
+    ASSERT_TRUE(load(barScene("imageFile=\"" + image +
+                                  "\" youngModulusTransfer=\"0 1000 255 5000\" "
+                                  "densityTransfer=\"0 100 255 300\"",
+                              levels)))
+        << messages();
+    EXPECT_EQ(scene.log().count(MessageLevel::warning), 0u) << messages();
+    const Topology* grid = topology("/root/body/grid");
+    ASSERT_EQ(grid->hexahedra().size(), 8u);
+    const std::vector<double> fractions = numbers(value("/root/body/grid", "volumeFractions"));
+    const std::vector<double> rest = numbers(value("/root/body/dofs", "position"));
+    ASSERT_EQ(rest.size(), 36u * 3);
+    for (int p = 0; p < 4; ++p) {
+      ASSERT_EQ(rest[3 * p], 0.0);
+      ASSERT_EQ(rest[3 * (32 + p)], 8.0);
+    }
+    ASSERT_TRUE(scene.step()) << messages();
+    const std::vector<double> x = numbers(value("/root/body/dofs", "position"));
+    // Cells in x order: hexahedron e spans [x0, x0 + 1] where x0 is its lowest corner.
+    std::vector<double> cellCompliance(8, 0.0);
+    double expectedMass = 0;
+    for (std::size_t e = 0; e < 8; ++e) {
+      const Hexahedron& h = grid->hexahedra()[e];
+      const int x0 = int(std::lround(grid->positions()[h[0]].x()));
+      const double E = x0 < 4 ? 1000 : 5000, rho = x0 < 4 ? 100 : 300;
+      cellCompliance[x0] = 1.0 / (E * fractions[e]);
+      expectedMass += rho * fractions[e];
+    }
+    double maxError = 0, uEnd = 0;
+    for (std::size_t p = 0; p < 36; ++p) {
+      const int k = int(std::lround(rest[3 * p]));
+      double u = 0;
+      for (int i = 0; i < k; ++i) u += 4.0 * cellCompliance[i];
+      maxError = std::max(maxError, std::abs(x[3 * p] - rest[3 * p] - u));
+      maxError = std::max({maxError, std::abs(x[3 * p + 1] - rest[3 * p + 1]),
+                           std::abs(x[3 * p + 2] - rest[3 * p + 2])});
+      uEnd = std::max(uEnd, u);
+    }
+    std::printf("[ bar ] end displacement %.9g, largest error vs springs in series %.2e\n", uEnd,
+                maxError);
+    EXPECT_LT(maxError, 1e-10 * uEnd);
+    // About 4 x (4 / 1000 + 4 / 5000) = 0.0192 with fractions near 1.
+    EXPECT_NEAR(uEnd, 0.0192, 0.05 * 0.0192);
+    EXPECT_NEAR(numbers(value("/root/body/fem", "totalMass"))[0], expectedMass,
+                1e-12 * expectedMass);
+  }
+}
+
+TEST_F(ImageMaterial, NegativeModulusFromTheTransferIsAnErrorNamingTheValue) {
+  const std::string image = writeTwoMaterialImage();
+  EXPECT_FALSE(
+      load(barScene("imageFile=\"" + image + "\" youngModulusTransfer=\"0 1000 255 -5\"")));
+  const Message m = find(MessageLevel::error, "-5 at image value 255");
+  EXPECT_EQ(m.field, "youngModulusTransfer");
+  EXPECT_EQ(m.componentPath, "/root/body/fem");
+  EXPECT_FALSE(load(barScene("imageFile=\"" + image + "\" densityTransfer=\"0 -1 255 10\"")));
+  EXPECT_EQ(find(MessageLevel::error, "-1 at image value 0").field, "densityTransfer");
+}
+
+TEST_F(ImageMaterial, MissingImageIsAnErrorNamingTheField) {
+  EXPECT_FALSE(load(barScene("imageFile=\"no/such/image.mhd\" youngModulusTransfer=\"0 1 1 2\"")));
+  bool named = false;
+  for (const Message& m : messagesAt(MessageLevel::error)) named = named || m.field == "imageFile";
+  EXPECT_TRUE(named) << messages();
 }
 
 // --- Bad input -----------------------------------------------------------------------------
