@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: MIT
+#include "MultigridLinearSolver.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "GridTransfer.h"
+#include "SparseGrid.h"
+#include "simulation/MechanicalOperations.h"
+#include "simulation/MechanicalState.h"
+#include "simulation/Timing.h"
+
+namespace stroma {
+
+namespace {
+
+/// The first Topology in `node` or below it (depth first).
+Topology* findBelow(const Node& node) {
+  if (Topology* t = node.get<Topology>()) return t;
+  for (const auto& child : node.children())
+    if (Topology* t = findBelow(*child)) return t;
+  return nullptr;
+}
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
+}  // namespace
+
+void MultigridLinearSolver::init() {
+  if (!findTopology(nullptr))
+    msgError("no grid found: no topology in " + (node() ? node()->path() : std::string("the node")) +
+                 ", above it or below it; give topology=\"@path\" to a SparseGridTopology, a "
+                 "RegularGridTopology or a hexahedral lattice",
+             "topology");
+}
+
+Topology* MultigridLinearSolver::findTopology(MechanicalOperations* mop) const {
+  if (Topology* t = l_topology.get()) return t;
+  if (mop && !mop->independentStates().empty())
+    if (const Node* stateNode = mop->independentStates().front()->node())
+      if (Topology* t = stateNode->getUp<Topology>()) return t;
+  if (!node()) return nullptr;
+  if (Topology* t = node()->getUp<Topology>()) return t;
+  return findBelow(*node());
+}
+
+bool MultigridLinearSolver::prepareGrids(MechanicalOperations& mop) {
+  const Topology* topology = findTopology(&mop);
+  if (!topology) {
+    msgError("no grid found for the solved state: give topology=\"@path\"", "topology");
+    return false;
+  }
+  if (m_gridsReady && topology == m_topology && topology->revision() == m_topologyRevision)
+    return true;
+  m_gridsReady = false;
+  m_topology = topology;
+  m_topologyRevision = topology->revision();
+
+  // Level 0: the topology's hexahedra on their lattice.
+  sparsegrid::SparseGrid fine;
+  std::string error;
+  const sparsegrid::SparseGrid* own = topology->sparseGrid();
+  if (!multigrid::makeLatticeGrid(topology->positions(), topology->hexahedra(),
+                                  own ? &own->box : nullptr, fine, error)) {
+    msgError("cannot build the grid from " + topology->path() + ": " + error, "topology");
+    return false;
+  }
+  // Coarser levels and the prolongations between them.
+  m_pointP.clear();
+  std::vector<std::array<Index, 8>> children;
+  for (int l = 0; l < d_levels.value() && fine.cells.size() > 1; ++l) {
+    sparsegrid::SparseGrid coarse = sparsegrid::coarsenSparseGrid(fine, &children);
+    m_pointP.push_back(multigrid::makeProlongation(fine, coarse, children));
+    fine = std::move(coarse);
+  }
+  d_levelCount.setValue(int(m_pointP.size()) + 1);
+  m_fixed.clear();  // the expanded P are made with the fixed set, in solve()
+  m_gridsReady = true;
+  return true;
+}
+
+void MultigridLinearSolver::findFixed(MechanicalOperations& mop, std::vector<char>& fixed) {
+  const VecId ones = mop.allocDeriv();
+  mop.scatter(Eigen::VectorXd::Ones(Eigen::Index(mop.systemSize())), ones);
+  mop.projectResponse(ones);
+  Eigen::VectorXd projected;
+  mop.gather(ones, projected);
+  mop.freeVec(ones);
+  fixed.assign(std::size_t(projected.size()), 0);
+  for (Eigen::Index i = 0; i < projected.size(); ++i) fixed[std::size_t(i)] = projected[i] == 0;
+}
+
+LinearSolveReport MultigridLinearSolver::fail(MechanicalOperations& mop, VecId x) {
+  mop.vOp(x, VecId::null(), VecId::null(), 0.0);
+  LinearSolveReport r;
+  r.converged = false;
+  r.residual = 1;
+  return r;
+}
+
+LinearSolveReport MultigridLinearSolver::solve(MechanicalOperations& mop,
+                                               const MechanicalParams& mp, VecId x, VecId rhs) {
+  if (!prepareGrids(mop)) return fail(mop, x);
+  // The state must be the grid's points, 3 numbers each.
+  const auto& states = mop.independentStates();
+  const std::size_t points = m_topology->nbPoints();
+  if (states.size() != 1 || states.front()->derivDimension() != 3 ||
+      mop.systemSize() != 3 * points) {
+    if (!m_reportedBadInput) {
+      m_reportedBadInput = true;
+      msgError("the solved system has " + std::to_string(mop.systemSize()) + " rows in " +
+                   std::to_string(states.size()) + " state(s), but the grid of " +
+                   m_topology->path() + " has " + std::to_string(points) +
+                   " points: multigrid needs one Vec3 state with one point per grid point",
+               "topology");
+    }
+    return fail(mop, x);
+  }
+
+  mop.assemble(mp, m_matrix);
+  ScopedPhase phase(mop.timing(), "linearSolve");
+  // Prolongations in the space the constraints allow, remade when the fixed set changes.
+  std::vector<char> fixed;
+  findFixed(mop, fixed);
+  const bool patternChanged = fixed != m_fixed || m_P.size() != m_pointP.size();
+  if (patternChanged) {
+    m_fixed = std::move(fixed);
+    m_P.clear();
+    for (std::size_t l = 0; l < m_pointP.size(); ++l)
+      m_P.push_back(multigrid::expandProlongation(m_pointP[l], 3,
+                                                  l == 0 ? m_fixed : std::vector<char>{}));
+  }
+  const Eigen::SparseMatrix<double>& A = m_matrix.matrix();
+  m_cycle.setOperators(A, m_P, patternChanged);
+
+  mop.gather(rhs, m_rhs);
+  LinearSolveReport report;
+  const double normB = m_rhs.norm();
+  m_solution.setZero(m_rhs.size());
+  if (normB == 0) {
+    mop.scatter(m_solution, x);
+    this->report(report);
+    return report;
+  }
+  multigrid::CycleSettings settings;
+  settings.smoothingIterations = d_smoothingIterations.value();
+  settings.coarseIterations = d_coarseIterations.value();
+  settings.directCoarseSolve = d_directCoarseSolve.value();
+  settings.postSmoothing = d_postSmoothing.value();
+  report.converged = false;
+  while (report.iterations < d_iterations.value()) {
+    if (report.iterations == 0 && d_cycle.value() == MultigridCycleKind::full)
+      m_cycle.fullCycle(m_solution, m_rhs, settings);
+    else
+      m_cycle.vCycle(0, m_solution, m_rhs, settings);
+    ++report.iterations;
+    m_residual.noalias() = m_rhs - A * m_solution;
+    report.residual = m_residual.norm() / normB;
+    if (!std::isfinite(report.residual)) break;
+    if (report.residual <= d_tolerance.value()) {
+      report.converged = true;
+      break;
+    }
+  }
+  mop.scatter(m_solution, x);
+  this->report(report);
+  return report;
+}
+
+void MultigridLinearSolver::report(const LinearSolveReport& r) {
+  ++m_solves;
+  d_lastIterations.setValue(r.iterations);
+  d_lastResidual.setValue(r.residual);
+  if (d_verbose.value())
+    msgInfo("multigrid: " + std::to_string(r.iterations) + " cycles, relative residual " +
+            number(r.residual));
+  if (r.converged) return;
+  if (m_unconverged++ == 0)
+    msgWarning("multigrid stopped after " + std::to_string(r.iterations) +
+                   " cycles without converging: relative residual " + number(r.residual) +
+                   " > tolerance " + number(d_tolerance.value()) +
+                   " (raise iterations, levels or smoothingIterations); later ones are counted",
+               "iterations");
+}
+
+void MultigridLinearSolver::cleanup() {
+  if (m_unconverged > 1)
+    msgWarning("multigrid did not converge in " + std::to_string(m_unconverged) + " of " +
+                   std::to_string(m_solves) + " solves",
+               "iterations");
+}
+
+}  // namespace stroma

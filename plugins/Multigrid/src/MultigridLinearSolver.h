@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "MultigridCycle.h"
+#include "core/DataTraits.h"
+#include "core/Link.h"
+#include "linalg/AssembledMatrix.h"
+#include "simulation/Solvers.h"
+#include "topology/SparseGridLevels.h"
+#include "topology/Topology.h"
+
+namespace stroma {
+
+enum class MultigridCycleKind { V, full };
+
+template <>
+struct EnumKeywords<MultigridCycleKind> {
+  static constexpr std::array<std::string_view, 2> names{"V", "full"};
+};
+
+/// Geometric multigrid on nested hexahedral grids (Nesme 2008, seed 001, ch. 5 sec. 3), for
+/// (m M + b B + k K) x = rhs like any LinearSolver: EulerImplicitSolver, StaticSolver and
+/// NewtonRaphsonSolver use it unchanged.
+///
+/// Grid: the hexahedra of the `topology` link, else of the first Topology at or above the node
+/// of the solved state (else of the solver's node). Supported: SparseGridTopology (its box),
+/// RegularGridTopology and any hexahedral topology whose hexahedra are cells of one
+/// axis-aligned regular lattice. The state must be one Vec3 state with a point per topology
+/// point. Level 0 is those hexahedra; `levels` coarser levels come from 2 x 2 x 2 grouping
+/// (fewer when a level is down to one cell). Prolongation = trilinear interpolation
+/// (GridTransfer.h), restriction = its transpose, coarse operators A_{l+1} = P^T A_l P
+/// (Galerkin; for a linear material on full cells they equal the stiffness of the coarse grid,
+/// seed 001 ch. 4 sec. 3), smoother = CG (MultigridCycle.h).
+///
+/// Constraints: A_0 is assembled with the fixed rows as identity (as SparseLDLSolver); the rows
+/// of P at fixed degrees of freedom (those projectResponse zeroes) are zeroed, so coarse
+/// corrections never move a fixed point and the identity rows do not enter A_1.
+///
+/// Each solve assembles A_0 and recomputes the Galerkin operators (the values change for a
+/// corotational model); the grids and P are rebuilt only when the topology or the set of fixed
+/// degrees of freedom changed. Reports iterations (cycles) and the relative residual like
+/// CGLinearSolver, warning once when `tolerance` is not reached.
+class MultigridLinearSolver final : public LinearSolver {
+ public:
+  Data<int> d_levels{this,
+                     "levels",
+                     4,
+                     "Coarse levels below the simulated grid (0: plain CG with "
+                     "coarseIterations on the fine level).",
+                     {.min = 0.0, .max = 30.0}};
+  Data<MultigridCycleKind> d_cycle{this, "cycle", MultigridCycleKind::V,
+                                   "V (V-cycle from the fine level) or full (full multigrid: "
+                                   "start at the coarsest level)."};
+  Data<int> d_iterations{
+      this, "iterations", 1, "Maximum number of cycles per solve.", {.min = 1.0}};
+  Data<double> d_tolerance{this,
+                           "tolerance",
+                           1e-5,
+                           "Relative residual ||rhs - A x|| / ||rhs|| at which to stop cycling "
+                           "(0: always do `iterations` cycles).",
+                           {.min = 0.0}};
+  Data<int> d_smoothingIterations{this,
+                                  "smoothingIterations",
+                                  7,
+                                  "CG iterations of each smoothing on every level but the "
+                                  "coarsest (seed 001 table 5.2: 7).",
+                                  {.min = 0.0}};
+  Data<bool> d_postSmoothing{this, "postSmoothing", true,
+                             "Smooth again after the coarse correction."};
+  Data<int> d_coarseIterations{this,
+                               "coarseIterations",
+                               150,
+                               "CG iterations on the coarsest level (seed 001 table 5.2: 150).",
+                               {.min = 1.0}};
+  Data<bool> d_directCoarseSolve{this, "directCoarseSolve", false,
+                                 "Solve the coarsest level with LDL^T instead of CG."};
+  Link<Topology> l_topology{this, "topology",
+                            "Topology whose hexahedra are the fine grid (default: the one at or "
+                            "above the solved state's node)."};
+  Data<bool> d_verbose{this, "verbose", false, "Report every solve."};
+  Data<int> d_levelCount{
+      this, "levelCount", 0, "Levels built, the fine one included.", {.output = true}};
+  Data<int> d_lastIterations{
+      this, "lastIterations", 0, "Cycles of the last solve.", {.output = true}};
+  Data<double> d_lastResidual{
+      this, "lastResidual", 0.0, "Relative residual of the last solve.", {.output = true}};
+
+  void init() override;
+  LinearSolveReport solve(MechanicalOperations& mop, const MechanicalParams& mp, VecId x,
+                          VecId rhs) override;
+  void cleanup() override;
+
+ private:
+  Topology* findTopology(MechanicalOperations* mop) const;
+  /// Builds the grids and P when the topology changed; false (with an error) on bad input.
+  bool prepareGrids(MechanicalOperations& mop);
+  /// The fixed degrees of freedom: those projectResponse zeroes.
+  void findFixed(MechanicalOperations& mop, std::vector<char>& fixed);
+  LinearSolveReport fail(MechanicalOperations& mop, VecId x);
+  void report(const LinearSolveReport& r);
+
+  AssembledMatrix m_matrix;
+  multigrid::MultigridCycle m_cycle;
+  std::vector<Eigen::SparseMatrix<double, Eigen::RowMajor>> m_pointP;  ///< per level, scalar
+  std::vector<multigrid::SparseMatrix> m_P;                            ///< per level, expanded
+  std::vector<char> m_fixed;
+  const Topology* m_topology = nullptr;
+  std::uint64_t m_topologyRevision = 0;
+  bool m_gridsReady = false;
+  bool m_reportedBadInput = false;
+  Eigen::VectorXd m_rhs, m_solution, m_residual;
+  long long m_unconverged = 0, m_solves = 0;
+};
+
+}  // namespace stroma

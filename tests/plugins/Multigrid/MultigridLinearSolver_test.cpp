@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: MIT
+// MultigridLinearSolver on the cantilever of seed 001 table 5.2 (E = 40000, nu = 0.3, clamped
+// at x = 0, huge gravity), here on 16^3 hexahedra so that the test stays fast on one core (the
+// 32^3 case is bench/MultigridBenchmarks.cpp): one V-cycle of MG4 is far more accurate than 150
+// CG iterations; cycling converges to the direct solution; an implicit Euler run follows
+// SparseLDL's trajectory; bad input is reported by field, without a crash.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "MultigridScenes.h"
+#include "core/StateTypes.h"
+#include "simulation/MechanicalState.h"
+
+namespace stroma::test {
+namespace {
+
+const Vec3i kCells16{16, 16, 16};
+
+std::string mg(int levels, const std::string& extra = "", const std::string& name = "mg") {
+  return "<MultigridLinearSolver name=\"" + name + std::to_string(levels) + "\" levels=\"" +
+         std::to_string(levels) + "\" iterations=\"1\" tolerance=\"0\" " + extra + "/>\n";
+}
+
+// Table 5.2 on 16^3 cells (bending under 10^6 g): reference = CG to a relative residual of
+// 1e-13; CGfast = 10 CG iterations, CG20 = 20 (about the work of one MG4 V-cycle: 7 + 7
+// smoothing products and a residual on the fine level, an eighth of that per coarser level);
+// MGk = one V-cycle with k coarse levels (7 smoothing iterations, 150 at the coarsest), FMG4 one
+// full cycle. The bounds are the errors measured on this grid (Release) with a margin of about
+// 1.5x, so that a wrong transfer or operator fails. On 16^3, 150 CG iterations already reach
+// 2e-6 (CG needs about twice as many iterations on 32^3): the comparison with CGmax is made on
+// 32^3 in bench/MultigridBenchmarks.cpp.
+TEST(MultigridLinearSolver, OneCycleOnTheCantileverOfTable52) {
+  const std::string cg = R"(template="CompressedRowSparseMatrixMat3x3d" threshold="1e-300" )";
+  const std::string solvers =
+      "<CGLinearSolver name=\"reference\" iterations=\"5000\" tolerance=\"1e-13\" " + cg +
+      "/>\n<CGLinearSolver name=\"cg10\" tolerance=\"0\" iterations=\"10\" " + cg +
+      "/>\n<CGLinearSolver name=\"cg20\" tolerance=\"0\" iterations=\"20\" " + cg + "/>\n" +
+      mg(1) + mg(2) + mg(4) + mg(4, "cycle=\"full\"", "fmg");
+  LoadedScene s(cantileverScene(kCells16, 2.0, 40000, 0.3, solvers));
+  ASSERT_TRUE(s.loaded) << s.log();
+  std::vector<LinearSolveReport> reports;
+  const std::vector<Eigen::VectorXd> u = solveStatic(s, &reports);
+  ASSERT_EQ(u.size(), 7u);
+  ASSERT_TRUE(reports[0].converged);
+  const Eigen::VectorXd& reference = u[0];
+  ASSERT_GT(reference.norm(), 0);
+  const double cg10 = relativeError(u[1], reference), cg20 = relativeError(u[2], reference);
+  const double mg1 = relativeError(u[3], reference), mg2 = relativeError(u[4], reference);
+  const double mg4 = relativeError(u[5], reference), fmg4 = relativeError(u[6], reference);
+  std::printf("relative errors: CG10 %.3g CG20 %.3g MG1 %.3g MG2 %.3g MG4 %.3g FMG4 %.3g\n",
+              cg10, cg20, mg1, mg2, mg4, fmg4);
+  EXPECT_GT(cg10, 0.8);  // 10 iterations barely start the deflection
+  EXPECT_LT(mg1, 0.03);
+  EXPECT_LT(mg2, 0.1);
+  EXPECT_LT(mg4, 0.36);
+  EXPECT_LT(fmg4, 0.025);
+  EXPECT_LT(mg4, 0.5 * cg20);  // better than plain CG for the same work
+  EXPECT_LT(fmg4, 0.05 * cg20);
+}
+
+// Repeated V-cycles converge: measured 16 cycles of MG4 to a relative residual of 1e-8 on this
+// grid (a reduction of about 3 per cycle), 9 for MG1.
+TEST(MultigridLinearSolver, VCyclesConvergeOnTheCantilever) {
+  const std::string solvers =
+      "<MultigridLinearSolver name=\"mg4\" levels=\"4\" iterations=\"40\" tolerance=\"1e-8\"/>\n"
+      "<MultigridLinearSolver name=\"mg1\" levels=\"1\" iterations=\"40\" tolerance=\"1e-8\"/>\n";
+  LoadedScene s(cantileverScene(kCells16, 2.0, 40000, 0.3, solvers));
+  ASSERT_TRUE(s.loaded) << s.log();
+  std::vector<LinearSolveReport> reports;
+  const std::vector<Eigen::VectorXd> u = solveStatic(s, &reports);
+  ASSERT_EQ(u.size(), 2u);
+  EXPECT_TRUE(reports[0].converged);
+  EXPECT_TRUE(reports[1].converged);
+  EXPECT_LE(reports[0].iterations, 20);
+  EXPECT_LE(reports[1].iterations, 12);
+  EXPECT_LT(relativeError(u[0], u[1]), 1e-8);
+}
+
+TEST(MultigridLinearSolver, CyclesConvergeToTheDirectSolution) {
+  const std::string solvers =
+      "<SparseLDLSolver name=\"ldl\"/>\n"
+      "<MultigridLinearSolver name=\"mg\" levels=\"3\" iterations=\"30\" tolerance=\"1e-10\"/>\n"
+      "<MultigridLinearSolver name=\"direct\" levels=\"2\" directCoarseSolve=\"true\" "
+      "iterations=\"30\" tolerance=\"1e-10\"/>\n";
+  LoadedScene s(cantileverScene(Vec3i(8, 4, 4), 2.0, 40000, 0.3, solvers));
+  ASSERT_TRUE(s.loaded) << s.log();
+  std::vector<LinearSolveReport> reports;
+  const std::vector<Eigen::VectorXd> u = solveStatic(s, &reports);
+  ASSERT_EQ(u.size(), 3u);
+  for (int k : {1, 2}) {
+    EXPECT_TRUE(reports[k].converged);
+    EXPECT_LE(reports[k].residual, 1e-10);
+    EXPECT_LT(reports[k].iterations, 30);
+    EXPECT_LT(relativeError(u[k], u[0]), 1e-7);
+  }
+  // The clamped points do not move.
+  const auto& rest = s.body().get<MechanicalState<Vec3Types>>()->readCoord(VecId::restPosition());
+  for (std::size_t i = 0; i < rest.size(); ++i)
+    if (rest[i].x() == 0) {
+      for (int a = 0; a < 3; ++a) EXPECT_EQ(u[1][3 * Eigen::Index(i) + a], 0.0);
+    }
+}
+
+TEST(MultigridLinearSolver, ImplicitEulerFollowsSparseLDL) {
+  auto run = [](const std::string& solver) {
+    LoadedScene s(cantileverScene(Vec3i(8, 4, 4), 2.0, 4000, 0.3,
+                                  "<EulerImplicitSolver rayleighStiffness=\"0.1\" "
+                                  "rayleighMass=\"0.1\"/>\n" + solver,
+                                  "large", 9.81, 10.0, 0.02));
+    EXPECT_TRUE(s.loaded) << s.log();
+    for (int n = 0; n < 20; ++n) EXPECT_TRUE(s.scene->step()) << s.log();
+    EXPECT_EQ(s.log(), "");
+    return s.body().get<MechanicalState<Vec3Types>>()->readCoord(VecId::position());
+  };
+  const std::vector<Vec3d> ldl = run("<SparseLDLSolver/>");
+  const std::vector<Vec3d> multigrid = run(
+      "<MultigridLinearSolver levels=\"2\" iterations=\"50\" tolerance=\"1e-10\"/>");
+  ASSERT_EQ(ldl.size(), multigrid.size());
+  double difference = 0, tipDrop = 0;
+  for (std::size_t i = 0; i < ldl.size(); ++i) {
+    difference = std::max(difference, (ldl[i] - multigrid[i]).norm());
+    tipDrop = std::max(tipDrop, -ldl[i].y());
+  }
+  EXPECT_GT(tipDrop, 1e-3);  // the beam bent
+  EXPECT_LT(difference, 1e-7 * (1 + tipDrop));
+}
+
+TEST(MultigridLinearSolver, ReportsAMissingGrid) {
+  LoadedScene s(
+      "<Node name=\"root\"><Node name=\"Body\"><StaticSolver/>"
+      "<MultigridLinearSolver name=\"mg\"/><MechanicalObject position=\"0 0 0  1 0 0\"/>"
+      "<UniformMass/></Node></Node>");
+  EXPECT_FALSE(s.loaded);
+  EXPECT_TRUE(s.reported(MessageLevel::error, "topology", "no grid found")) << s.log();
+}
+
+TEST(MultigridLinearSolver, RefusesNegativeLevels) {
+  LoadedScene s(cantileverScene(Vec3i(4, 2, 2), 2.0, 40000, 0.3,
+                                "<StaticSolver/><MultigridLinearSolver levels=\"-1\"/>"));
+  EXPECT_FALSE(s.loaded);
+  bool named = false;
+  for (const Message& m : s.scene->log().messages())
+    named |= m.level == MessageLevel::error && m.field == "levels";
+  EXPECT_TRUE(named) << s.log();
+}
+
+TEST(MultigridLinearSolver, ReportsAStateThatDoesNotMatchTheGrid) {
+  // The solver is linked to a grid of 3 x 3 x 3 points; the beam has 5 x 3 x 3.
+  std::string xml = cantileverScene(
+      Vec3i(4, 2, 2), 2.0, 40000, 0.3,
+      "<StaticSolver/><MultigridLinearSolver name=\"mg\" topology=\"@../Other/grid\"/>");
+  xml.insert(xml.rfind("</Node>"),
+             "<Node name=\"Other\"><RegularGridTopology name=\"grid\" n=\"3 3 3\"/></Node>");
+  LoadedScene s(xml);
+  ASSERT_TRUE(s.loaded) << s.log();
+  s.scene->step();
+  EXPECT_TRUE(s.reported(MessageLevel::error, "topology", "has 27 points")) << s.log();
+  for (const Vec3d& p : s.body().get<MechanicalState<Vec3Types>>()->readCoord(VecId::position()))
+    EXPECT_TRUE(p.allFinite());
+}
+
+TEST(MultigridLinearSolver, ReportsHexahedraOffALattice) {
+  // Two hexahedra, the second one's corner moved: not a lattice cell.
+  LoadedScene s(
+      "<Node name=\"root\" gravity=\"0 -10 0\"><Node name=\"Body\"><StaticSolver/>"
+      "<MultigridLinearSolver name=\"mg\" levels=\"1\"/>"
+      "<MeshTopology name=\"mesh\" position=\"0 0 0  1 0 0  1 1 0  0 1 0  0 0 1  1 0 1  1 1 1  "
+      "0 1 1  2 0 0  2 1 0  2 0 1  2.3 1 1\" hexahedra=\"0 1 2 3 4 5 6 7  1 8 9 2 5 10 11 6\"/>"
+      "<MechanicalObject name=\"dofs\" position=\"@mesh.position\"/><UniformMass/>"
+      "<FixedProjectiveConstraint indices=\"0 3 4 7\"/>"
+      "<HexahedronFEMForceField youngModulus=\"100\" poissonRatio=\"0.3\"/></Node></Node>");
+  ASSERT_TRUE(s.loaded) << s.log();
+  s.scene->step();
+  EXPECT_TRUE(s.reported(MessageLevel::error, "topology", "not a cell of the axis-aligned"))
+      << s.log();
+}
+
+}  // namespace
+}  // namespace stroma::test
