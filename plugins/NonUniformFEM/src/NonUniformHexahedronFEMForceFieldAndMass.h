@@ -2,6 +2,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -137,12 +139,23 @@ class NonUniformHexahedronFEMForceFieldAndMass final : public Mass<Vec3Types> {
   /// At the start of a step: recomputes the constants when the material Data changed.
   void refresh();
   fem::HexahedronVectors gather(std::span<const Vec3d> v, std::size_t e) const;
+  /// Vertex -> corners (e * 8 + i) in increasing element order, for the deterministic sums.
+  void buildVertexAdjacency(std::size_t pointCount);
+  /// out += factor * sum over the hexahedra of each vertex of the corners written by
+  /// perElement(e, corners): elements in parallel (each writes its own 8 corners), then each
+  /// vertex sums its corners in element order, so results do not depend on the thread count.
+  void accumulate(
+      std::span<Vec3d> out, double factor, std::size_t grain,
+      const std::function<void(std::size_t, Eigen::Map<fem::HexahedronVectors>)>& perElement);
 
   const Topology* m_topology = nullptr;
   bool m_ready = false;
   std::vector<Hexahedron> m_hexahedra;
   std::vector<fem::CorotationalHexahedron> m_elements;  // stiffness = the condensed K
   std::vector<Eigen::Matrix3d> m_rotations;             // of the last addForce
+  std::vector<Vec3d> m_corners;                         // (hexahedra x 8) per-element results
+  std::vector<Index> m_vertexOffsets{0};                // (points + 1) into m_vertexCorners
+  std::vector<Index> m_vertexCorners;                   // corners around each vertex
   std::vector<fem::Matrix8d> m_elementMasses;           // condensed consistent (I_3 implied)
   std::vector<double> m_vertexMasses;                   // lumped
   std::vector<fem::CellMaterial> m_cellMaterials;       // per finest cell
