@@ -43,7 +43,11 @@ struct EnumKeywords<MultigridCycleKind> {
 ///
 /// Each solve assembles A_0 and recomputes the Galerkin operators (the values change for a
 /// corotational model); the grids and P are rebuilt only when the topology or the set of fixed
-/// degrees of freedom changed. Reports iterations (cycles) and the relative residual like
+/// degrees of freedom changed. With `conjugateGradient`, the cycles precondition an outer
+/// flexible CG (Notay 2000, "Flexible conjugate gradients", SIAM J. Sci. Comput. 22: the
+/// Polak-Ribiere beta, since a cycle with CG smoothers is not a fixed linear operator), which
+/// keeps the convergence when coarse hexahedra lock (bending, nu near 0.5).
+/// Reports iterations (cycles) and the relative residual like
 /// CGLinearSolver, warning once when `tolerance` is not reached.
 class MultigridLinearSolver final : public LinearSolver {
  public:
@@ -79,6 +83,10 @@ class MultigridLinearSolver final : public LinearSolver {
                                {.min = 1.0}};
   Data<bool> d_directCoarseSolve{this, "directCoarseSolve", false,
                                  "Solve the coarsest level with LDL^T instead of CG."};
+  Data<bool> d_conjugateGradient{this, "conjugateGradient", false,
+                                 "Use each cycle (from zero) as the preconditioner of an outer "
+                                 "flexible conjugate gradient: an iteration is then one cycle and "
+                                 "one product with A."};
   Link<Topology> l_topology{this, "topology",
                             "Topology whose hexahedra are the fine grid (default: the one at or "
                             "above the solved state's node)."};
@@ -102,6 +110,15 @@ class MultigridLinearSolver final : public LinearSolver {
   /// The fixed degrees of freedom: those projectResponse zeroes.
   void findFixed(MechanicalOperations& mop, std::vector<char>& fixed);
   LinearSolveReport fail(MechanicalOperations& mop, VecId x);
+  /// z = one cycle on A z = r from z = 0.
+  void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z,
+                    const multigrid::CycleSettings& settings);
+  /// Stationary cycles (x += cycle correction) or flexible CG preconditioned by a cycle.
+  void iterateCycles(const Eigen::SparseMatrix<double>& A, double normB,
+                     const multigrid::CycleSettings& settings, LinearSolveReport& report);
+  void iterateConjugateGradient(const Eigen::SparseMatrix<double>& A, double normB,
+                                const multigrid::CycleSettings& settings,
+                                LinearSolveReport& report);
   void report(const LinearSolveReport& r);
 
   AssembledMatrix m_matrix;
@@ -114,6 +131,7 @@ class MultigridLinearSolver final : public LinearSolver {
   bool m_gridsReady = false;
   bool m_reportedBadInput = false;
   Eigen::VectorXd m_rhs, m_solution, m_residual;
+  Eigen::VectorXd m_z, m_direction, m_product, m_previousResidual;
   long long m_unconverged = 0, m_solves = 0;
 };
 
