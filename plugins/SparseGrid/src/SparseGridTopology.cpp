@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -68,7 +69,12 @@ SparseGridTopology::SparseGridTopology() {
               &d_filename,
               &d_vertices,
               &d_inputTriangles,
-              &d_inputQuads};
+              &d_inputQuads,
+              &d_fileImage,
+              &d_threshold,
+              &d_labels,
+              &d_dataResolution,
+              &d_voxelSize};
   for (BaseData* input : m_inputs) addInput(input);
   for (BaseData* output : std::initializer_list<BaseData*>{&d_position, &d_edges, &d_triangles,
                                                            &d_quads, &d_tetrahedra, &d_hexahedra,
@@ -188,7 +194,43 @@ bool SparseGridTopology::readSurface(std::vector<Vec3d>& points, std::vector<Tri
   return true;
 }
 
-bool SparseGridTopology::computeBox(const std::vector<Vec3d>& points, GridBox& box) {
+bool SparseGridTopology::surfaceBounds(const std::vector<Vec3d>& points, Vec3d& lo, Vec3d& hi) {
+  lo = d_min.value();
+  hi = d_max.value();
+  if (lo != hi) {
+    if ((hi - lo).minCoeff() <= 0) return true;  // computeBox reports it
+    // The flood starts on the box's border: a surface cut by the box loses its inside there.
+    std::size_t outside = 0;
+    for (const Vec3d& p : points) outside += (p - lo).minCoeff() < 0 || (hi - p).minCoeff() < 0;
+    if (outside > 0)
+      msgWarning(std::to_string(outside) + " of the surface's " + std::to_string(points.size()) +
+                     " points are outside the box [min, max]: the grid cuts the surface, and "
+                     "where the cut crosses the inside, the flood fill of the outside enters it",
+                 "min");
+    return true;
+  }
+  lo = hi = points.front();
+  for (const Vec3d& p : points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double side = (hi - lo).maxCoeff();
+  if (!(side > 0) || !std::isfinite(side)) {
+    msgError("the surface's points are all at one place (" + describe(lo) + "): give min and max",
+             "min");
+    return false;
+  }
+  // SOFA grows each side by 1 % of its own length; a flat side by 1 % of the largest.
+  for (int a = 0; a < 3; ++a) {
+    const double margin = kBoxMargin * (hi[a] > lo[a] ? hi[a] - lo[a] : side);
+    lo[a] -= margin;
+    hi[a] += margin;
+  }
+  return true;
+}
+
+bool SparseGridTopology::computeBox(Vec3d lo, Vec3d hi, const image::VolumeImage* image,
+                                    GridBox& box) {
   const Vec3i n = d_n.value();
   const double width = d_cellWidth.value();
   if (width <= 0 && (n.x() < 2 || n.y() < 2 || n.z() < 2)) {
@@ -200,40 +242,15 @@ bool SparseGridTopology::computeBox(const std::vector<Vec3d>& points, GridBox& b
         "n");
     return false;
   }
-  // The box: the scene's, or the surface's bounding box with a margin.
-  Vec3d lo = d_min.value(), hi = d_max.value();
-  if (lo != hi) {
+  // A box given in the scene (min != max) replaces the surface's or image's.
+  if (d_min.value() != d_max.value()) {
+    lo = d_min.value();
+    hi = d_max.value();
     if ((hi - lo).minCoeff() <= 0) {
       msgError("max must be above min along each axis; got min = \"" + describe(lo) +
                    "\", max = \"" + describe(hi) + "\"",
                "max");
       return false;
-    }
-    // The flood starts on the box's border: a surface cut by the box loses its inside there.
-    std::size_t outside = 0;
-    for (const Vec3d& p : points) outside += (p - lo).minCoeff() < 0 || (hi - p).minCoeff() < 0;
-    if (outside > 0)
-      msgWarning(std::to_string(outside) + " of the surface's " + std::to_string(points.size()) +
-                     " points are outside the box [min, max]: the grid cuts the surface, and "
-                     "where the cut crosses the inside, the flood fill of the outside enters it",
-                 "min");
-  } else {
-    lo = hi = points.front();
-    for (const Vec3d& p : points) {
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
-    }
-    const double side = (hi - lo).maxCoeff();
-    if (!(side > 0) || !std::isfinite(side)) {
-      msgError("the surface's points are all at one place (" + describe(lo) + "): give min and max",
-               "min");
-      return false;
-    }
-    // SOFA grows each side by 1 % of its own length; a flat side by 1 % of the largest.
-    for (int a = 0; a < 3; ++a) {
-      const double margin = kBoxMargin * (hi[a] > lo[a] ? hi[a] - lo[a] : side);
-      lo[a] -= margin;
-      hi[a] += margin;
     }
   }
   // Cells per axis, counted as reals first so that a huge request is refused, not wrapped.
@@ -245,7 +262,8 @@ bool SparseGridTopology::computeBox(const std::vector<Vec3d>& points, GridBox& b
   for (int a = 0; a < 3; ++a)
     cells[a] = width > 0 ? std::max(1.0, std::ceil((hi[a] - lo[a]) / width)) : double(n[a] - 1);
   const std::array<double, 3> finest{cells[0] * refine, cells[1] * refine, cells[2] * refine};
-  const double bytes = sparsegrid::estimateBuildBytes(finest, d_fractionSamples.value());
+  const double bytes = image ? sparsegrid::estimateImageBuildBytes(*image, finest)
+                             : sparsegrid::estimateBuildBytes(finest, d_fractionSamples.value());
   const double budget = memoryBudget();
   if (bytes > budget || finest[0] * finest[1] * finest[2] > 4e9 ||
       std::max({finest[0], finest[1], finest[2]}) > 1e9 ||
@@ -269,6 +287,68 @@ bool SparseGridTopology::computeBox(const std::vector<Vec3d>& points, GridBox& b
   return true;
 }
 
+std::string SparseGridTopology::imageFile(const char*& field) const {
+  if (!d_fileImage.value().original.empty()) {
+    field = "fileImage";
+    return d_fileImage.value().path();
+  }
+  for (const Data<FileName>* file : {&d_fileTopology, &d_filename}) {
+    const std::string path = file->value().path();
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (image::isVolumeImageFile(path) || ext == ".raw") {
+      field = file == &d_fileTopology ? "fileTopology" : "filename";
+      return path;
+    }
+  }
+  return {};
+}
+
+bool SparseGridTopology::readImage(const std::string& path, const char* field,
+                                   image::VolumeImage& image, std::vector<std::uint8_t>& inside) {
+  std::string error;
+  if (image::isVolumeImageFile(path)) {
+    if (!image::readVolumeImage(path, image, error)) {
+      msgError("cannot read the volume image: " + error, field);
+      return false;
+    }
+  } else if (d_dataResolution.value().minCoeff() <= 0) {
+    msgError("'" + path +
+                 "' is a .raw file without a header: give dataResolution (voxels along x, y "
+                 "and z, each >= 1) and voxelSize, or use a MetaImage (.mhd) or NRRD (.nrrd) "
+                 "file",
+             "dataResolution");
+    return false;
+  } else {
+    const Vec3i res = d_dataResolution.value();
+    const Vec3d size = d_voxelSize.value();
+    if (!(size.minCoeff() > 0) || !size.allFinite()) {
+      msgError("expected a voxel size > 0 along each axis, got \"" + describe(size) + "\"",
+               "voxelSize");
+      return false;
+    }
+    if (!image::readRawVoxels(path, {res.x(), res.y(), res.z()}, size, 0.5 * size, image,
+                              error)) {
+      msgError("cannot read the voxels: " + error, field);
+      return false;
+    }
+  }
+  sparsegrid::VoxelSelection selection;
+  selection.labels = d_labels.value();
+  if (d_threshold.isSet()) selection.threshold = d_threshold.value();
+  inside = sparsegrid::selectVoxels(image, selection);
+  if (std::find(inside.begin(), inside.end(), std::uint8_t(1)) == inside.end()) {
+    const auto [lowest, highest] = std::minmax_element(image.values.begin(), image.values.end());
+    char range[96];
+    std::snprintf(range, sizeof range, "%g to %g", *lowest, *highest);
+    msgError("empty image: no " + selection.describe() + " in '" + path + "' (" +
+                 std::to_string(image.voxelCount()) + " voxels, values from " + range + ")",
+             !selection.labels.empty() ? "labels" : "threshold");
+    return false;
+  }
+  return true;
+}
+
 void SparseGridTopology::doUpdate() {
   adoptSurface();
   // Adopting the surface re-links inputs: rebuild only when a value really changed.
@@ -277,21 +357,47 @@ void SparseGridTopology::doUpdate() {
   if (versions == m_builtVersions) return;
   m_builtVersions = versions;
 
-  std::vector<Vec3d> points;
-  std::vector<Triangle> triangles;
   GridBox box;
-  if (!readSurface(points, triangles) || !computeBox(points, box)) {
-    clearOutputs();
-    return;
-  }
+  const char* imageField = nullptr;
+  const std::string imagePath = imageFile(imageField);
   const bool fromFile =
       !d_fileTopology.value().original.empty() || !d_filename.value().original.empty();
-  std::string error;
-  if (!sparsegrid::buildSparseGrid({points, triangles}, box, d_fractionSamples.value(), m_grid,
-                                   error)) {
-    msgError("bad surface: " + error, fromFile ? "fileTopology" : "triangles");
-    clearOutputs();
-    return;
+  if (!imagePath.empty()) {
+    // --- A volume image: the inside voxels' boxes, in the image's box ---
+    image::VolumeImage image;
+    std::vector<std::uint8_t> inside;
+    if (!readImage(imagePath, imageField, image, inside) ||
+        !computeBox(image.lowerCorner(), image.upperCorner(), &image, box)) {
+      clearOutputs();
+      return;
+    }
+    std::string error;
+    if (!sparsegrid::buildSparseGridFromVoxels(image, inside, box, m_grid, error)) {
+      msgError("'" + imagePath + "': " + error + " [min, max] = [" + describe(box.origin) + ", " +
+                   describe(box.origin + Vec3d(box.cells[0], box.cells[1], box.cells[2])
+                                             .cwiseProduct(box.spacing)) +
+                   "]",
+               "min");
+      clearOutputs();
+      return;
+    }
+  } else {
+    // --- A surface ---
+    std::vector<Vec3d> points;
+    std::vector<Triangle> triangles;
+    Vec3d lo, hi;
+    if (!readSurface(points, triangles) || !surfaceBounds(points, lo, hi) ||
+        !computeBox(lo, hi, nullptr, box)) {
+      clearOutputs();
+      return;
+    }
+    std::string error;
+    if (!sparsegrid::buildSparseGrid({points, triangles}, box, d_fractionSamples.value(), m_grid,
+                                     error)) {
+      msgError("bad surface: " + error, fromFile ? "fileTopology" : "triangles");
+      clearOutputs();
+      return;
+    }
   }
   m_finerLevels.clear();
   // The virtual finer levels are kept, with each coarse cell's children, for the components
@@ -304,7 +410,7 @@ void SparseGridTopology::doUpdate() {
 
   // An open surface: the flood reached every cell, and the sub-cells around the surface too.
   const double keptVolume = double(m_grid.cells.size()) * m_grid.box.spacing.prod();
-  if (m_grid.count(sparsegrid::CellType::full) == 0 &&
+  if (imagePath.empty() && m_grid.count(sparsegrid::CellType::full) == 0 &&
       m_grid.filledVolume() < kOpenSurfaceShare * keptVolume)
     msgWarning(
         "the surface encloses no volume at this resolution: it is not closed, or has a "

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "ImageGrid.h"
 #include "SparseGrid.h"
 #include "core/Data.h"
 #include "topology/Topology.h"
@@ -31,6 +32,12 @@ namespace stroma {
 /// once), `hexahedra` (TopologyTypes.h order, positive), and per hexahedron `cellTypes` and
 /// `volumeFractions`; numbered as SOFA's SparseGridTopology (SparseGrid.h), so that scenes that
 /// name points by index keep working.
+///
+/// From a volume image instead (`fileImage`, or `filename`/`fileTopology` ending in .mhd, .mha,
+/// .nrrd, .nhdr, or SOFA's .raw with `dataResolution` and `voxelSize`): the inside voxels
+/// (`labels`, else value >= `threshold`, else value > 0) fill their boxes, and each cell is empty,
+/// full or boundary with its exact filled fraction (ImageGrid.h). The default box is the
+/// image's (the union of its voxel boxes).
 class SparseGridTopology final : public Topology, public DataEngine {
  public:
   Data<Vec3i> d_n{this, "n", Vec3i(2, 2, 2),
@@ -69,6 +76,25 @@ class SparseGridTopology final : public Topology, public DataEngine {
                                 {.autoLink = false}};
   Data<FileName> d_filename{
       this, "filename", {}, "SOFA's other name for fileTopology.", {.autoLink = false}};
+  Data<FileName> d_fileImage{this,
+                             "fileImage",
+                             {},
+                             "Volume image file (MetaImage .mhd/.mha, NRRD .nrrd/.nhdr): the grid "
+                             "of its inside voxels (see threshold, labels) instead of a surface.",
+                             {.autoLink = false}};
+  Data<double> d_threshold{this, "threshold", 0.0,
+                           "Image voxels with a value >= threshold are inside; when not given, "
+                           "those > 0 (ignored when labels are given)."};
+  Data<std::vector<double>> d_labels{
+      this, "labels", {}, "Values of the image voxels that are inside (a labelled image)."};
+  Data<Vec3i> d_dataResolution{this, "dataResolution", Vec3i(0, 0, 0),
+                               "Voxels along x, y and z of a .raw file of 8-bit voxels (SOFA's)."};
+  Data<Vec3d> d_voxelSize{this,
+                          "voxelSize",
+                          Vec3d(1, 1, 1),
+                          "Size of a voxel of a .raw file along x, y and z (SOFA's); the image "
+                          "covers [0, dataResolution * voxelSize].",
+                          {.unit = "m"}};
   Data<std::vector<Vec3d>> d_vertices{this,
                                       "vertices",
                                       {},
@@ -129,8 +155,19 @@ class SparseGridTopology final : public Topology, public DataEngine {
   void adoptSurface();
   /// The surface's points and triangles (quads split); false after reporting an error.
   bool readSurface(std::vector<Vec3d>& points, std::vector<Triangle>& triangles);
-  /// The box of cells; false after reporting an error.
-  bool computeBox(const std::vector<Vec3d>& points, sparsegrid::GridBox& box);
+  /// The box around the surface (the scene's, or the bounding box with a margin); false after
+  /// reporting an error.
+  bool surfaceBounds(const std::vector<Vec3d>& points, Vec3d& lo, Vec3d& hi);
+  /// The box of cells on [lo, hi] (n or cellWidth, nbVirtualFinerLevels), refused when the build
+  /// would need too much memory (`image`: the image it is built from, else a surface); false
+  /// after reporting an error.
+  bool computeBox(Vec3d lo, Vec3d hi, const image::VolumeImage* image, sparsegrid::GridBox& box);
+  /// The file of a volume image given (fileImage, or filename/fileTopology with an image or
+  /// .raw extension) and the field naming it; empty when the grid is built around a surface.
+  std::string imageFile(const char*& field) const;
+  /// Reads the image and selects its inside voxels; false after reporting an error.
+  bool readImage(const std::string& path, const char* field, image::VolumeImage& image,
+                 std::vector<std::uint8_t>& inside);
   void clearOutputs();
 
   sparsegrid::SparseGrid m_grid;

@@ -213,8 +213,7 @@ bool placeAxes(const std::array<Vec3d, 3>& directions, const Vec3d& firstVoxel,
   for (int a = 0; a < 3; ++a) {
     const Vec3d& d = directions[std::size_t(a)];
     const double along = d[a];
-    const double across = d.norm() > 0 ? std::sqrt(std::max(0.0, d.squaredNorm() - along * along))
-                                       : 0.0;
+    const double across = std::hypot(d[(a + 1) % 3], d[(a + 2) % 3]);
     if (!(std::abs(along) > 0) || !std::isfinite(along) || across > 1e-9 * std::abs(along)) {
       std::ostringstream s;
       s << "axis " << a << " has direction (" << d.x() << ", " << d.y() << ", " << d.z()
