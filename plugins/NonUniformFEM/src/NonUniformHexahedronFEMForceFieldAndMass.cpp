@@ -81,6 +81,10 @@ void NonUniformHexahedronFEMForceFieldAndMass::init() {
         setInvalid();
         return;
       }
+  if (!d_useMass.value())
+    msgWarning("useMass=\"false\" (a separate mass) is not supported: this component keeps the "
+               "condensed mass and gravity",
+               "useMass");
   buildVertexAdjacency(points);
   if (!computeConstants()) {
     setInvalid();

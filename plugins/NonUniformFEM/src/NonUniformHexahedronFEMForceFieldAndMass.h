@@ -103,6 +103,9 @@ class NonUniformHexahedronFEMForceFieldAndMass final : public Mass<Vec3Types> {
       this, "updateStiffnessMatrix", false,
       "SOFA option, accepted: the condensed matrices are recomputed whenever youngModulus, "
       "poissonRatio or density change, whatever its value."};
+  Data<bool> d_useMass{this, "useMass", true,
+                       "SOFA option: only true (this component is the body's mass) is supported; "
+                       "false is a warning and the mass is kept."};
   Data<bool> d_useMBK{this, "useMBK", true,
                       "SOFA option, accepted: the implicit solvers use M, B and K as any force "
                       "field's, whatever its value."};
