@@ -66,7 +66,7 @@ std::string collisionFreeCopy(const std::string& relative, const std::string& co
                           "CollisionResponse", "DiscreteIntersection"})
     EXPECT_EQ(eraseElements(text, tag), 1) << tag;
   EXPECT_EQ(eraseNodes(text, collisionNode), collisionNodes);
-  for (const char* left : {"CollisionModel", "SphereLoader", "<CollisionPipeline"})
+  for (const char* left : {"<SphereCollisionModel", "<SphereLoader", "<CollisionPipeline"})
     EXPECT_EQ(text.find(left), std::string::npos) << left << " is left";
   return text;
 }
