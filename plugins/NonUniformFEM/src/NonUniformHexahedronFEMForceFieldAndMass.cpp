@@ -82,9 +82,10 @@ void NonUniformHexahedronFEMForceFieldAndMass::init() {
         return;
       }
   if (!d_useMass.value())
-    msgWarning("useMass=\"false\" (a separate mass) is not supported: this component keeps the "
-               "condensed mass and gravity",
-               "useMass");
+    msgWarning(
+        "useMass=\"false\" (a separate mass) is not supported: this component keeps the "
+        "condensed mass and gravity",
+        "useMass");
   buildVertexAdjacency(points);
   if (!computeConstants()) {
     setInvalid();
@@ -181,6 +182,13 @@ bool NonUniformHexahedronFEMForceFieldAndMass::computeConstants() {
   }
   // The coarsest `used` levels: the last one's parents are the simulated cells.
   const auto levels = available.last(std::size_t(used));
+  if (!levels.empty() && levels.back().parentsChildren.size() != m_hexahedra.size()) {
+    msgError("the finer levels of " + m_topology->path() + " have children for " +
+                 std::to_string(levels.back().parentsChildren.size()) + " cells, not for its " +
+                 std::to_string(m_hexahedra.size()) + " hexahedra",
+             "topology");
+    return false;
+  }
   if (!computeCellMaterials(levels)) return false;
 
   const auto& rest = mstate()->readCoord(VecId::restPosition());
