@@ -301,6 +301,9 @@ TEST_F(VolumeImageTest, MetaImageHeaderErrorsNameFileLineAndField) {
   readError(write("rotated.mha", good + "TransformMatrix = 0 1 0 1 0 0 0 0 1\n"
                                         "ElementDataFile = LOCAL\n12345678"),
             {"rotated.mha", "line 4", "TransformMatrix", "axis-aligned"});
+  readError(write("huge.mhd", "NDims = 3\nDimSize = 2000000000 2000000000 2000000000\n"
+                              "ElementType = MET_UCHAR\nElementDataFile = LOCAL\n"),
+            {"huge.mhd", "line 2", "DimSize", "beyond what can be read"});
   readError(write("noend.mhd", good), {"noend.mhd", "ElementDataFile", "missing"});
   readError(write("notmeta.mhd", "hello\n"), {"notmeta.mhd", "line 1", "Key = Value"});
   readError((std::filesystem::path(write("x", "")).parent_path() / "absent.mhd").string(),
@@ -328,6 +331,13 @@ TEST_F(VolumeImageTest, NrrdHeaderErrorsNameFileLineAndField) {
   readError(write("oblique.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\n"
                                   "space directions: (1,1,0) (0,1,0) (0,0,1)\n\n12345678"),
             {"oblique.nrrd", "line 5", "space directions", "axis-aligned"});
+  readError(write("huge.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\n"
+                              "sizes: 100000 100000 100000\nencoding: raw\n\n1234"),
+            {"huge.nrrd", "line 4", "sizes", "beyond what can be read"});
+  // A header announcing more voxels than the file holds: the size check, no allocation.
+  readError(write("big.nrrd", "NRRD0004\ntype: double\ndimension: 3\nsizes: 10000 10000 100\n"
+                             "endian: little\nencoding: raw\n\n1234"),
+            {"big.nrrd", "holds 4 bytes", "expected 80000000000"});
   readError(write("magic.nrrd", "NRRX0004\n"), {"magic.nrrd", "line 1", "NRRD000"});
   readError(write("text.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\n"
                                "encoding: ascii\n\n1 2 3"),

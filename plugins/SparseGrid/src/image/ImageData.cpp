@@ -165,7 +165,8 @@ bool decodeText(std::string_view text, std::size_t count, std::vector<double>& v
   return true;
 }
 
-bool inflateBytes(std::string_view compressed, std::string& out, std::string& why) {
+bool inflateBytes(std::string_view compressed, std::size_t maxBytes, std::string& out,
+                  std::string& why) {
 #ifdef STROMA_HAS_ZLIB
   z_stream stream{};
   // 32 + MAX_WBITS: zlib detects a gzip or a zlib header by itself.
@@ -189,6 +190,7 @@ bool inflateBytes(std::string_view compressed, std::string& out, std::string& wh
       return false;
     }
     out.append(chunk.data(), chunk.size() - stream.avail_out);
+    if (out.size() >= maxBytes) break;  // all that is needed
     if (status == Z_OK && stream.avail_in == 0 && stream.avail_out != 0) {
       why = "compressed data ends early (truncated file)";
       inflateEnd(&stream);
@@ -199,6 +201,7 @@ bool inflateBytes(std::string_view compressed, std::string& out, std::string& wh
   return true;
 #else
   (void)compressed;
+  (void)maxBytes;
   out.clear();
   why = "compressed data needs zlib, which this build of Stroma was made without (install "
         "zlib1g-dev and rebuild)";

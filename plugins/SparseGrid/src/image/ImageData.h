@@ -47,8 +47,15 @@ void decodeBinary(SampleType type, bool bigEndian, const char* data, std::size_t
 /// Reads `count` numbers written as text (whitespace or commas between them).
 bool decodeText(std::string_view text, std::size_t count, std::vector<double>& values,
                 std::string& why);
-/// Inflates gzip or zlib data; false with `why` when zlib is not built in or the data is bad.
-bool inflateBytes(std::string_view compressed, std::string& out, std::string& why);
+/// Inflates gzip or zlib data, stopping after `maxBytes` (what the header announces: more is
+/// never needed, and a corrupt or hostile stream cannot exhaust the memory); false with `why`
+/// when zlib is not built in or the data is bad.
+bool inflateBytes(std::string_view compressed, std::size_t maxBytes, std::string& out,
+                  std::string& why);
+
+/// Voxels above this count (2^40, 8 TB of doubles) are refused before anything is allocated:
+/// a header announcing more is corrupt or beyond any machine.
+constexpr double kMaxVoxels = 1099511627776.0;
 
 /// Sets the image's spacing and origin from one direction vector per axis (spacing times the
 /// axis' unit direction) and the centre of the first voxel, flipping axes given with a negative

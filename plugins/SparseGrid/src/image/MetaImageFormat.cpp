@@ -2,6 +2,7 @@
 // MetaImage (ITK's MetaIO): a text header of "Key = Value" lines ending with ElementDataFile,
 // then the data, in this file (ElementDataFile = LOCAL, the .mha form) or in the file it names,
 // relative to the header (the .mhd + .raw form).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -163,6 +164,10 @@ bool readMetaImage(const std::string& path, VolumeImage& image, std::string& err
                     std::to_string(h.transform.size()));
   if (!h.type) return fail(h.line("ElementType"), "ElementType", "missing");
 
+  const double voxels = h.dimSize[0] * h.dimSize[1] * (nd == 3 ? h.dimSize[2] : 1.0);
+  if (voxels > kMaxVoxels)
+    return fail(h.line("DimSize"), "DimSize",
+                "an image of " + std::to_string(voxels) + " voxels is beyond what can be read");
   image = VolumeImage{};
   image.size = {int(h.dimSize[0]), int(h.dimSize[1]), nd == 3 ? int(h.dimSize[2]) : 1};
   const std::size_t count = image.voxelCount();
@@ -189,7 +194,10 @@ bool readMetaImage(const std::string& path, VolumeImage& image, std::string& err
   std::string inflated;
   if (h.compressed) {
     std::string why;
-    if (!inflateBytes(data, inflated, why))
+    const std::size_t needed =
+        h.binary ? count * sampleBytes(*h.type) + std::size_t(std::max(0LL, h.headerSize))
+                 : std::string::npos;  // text: as long as the values are written
+    if (!inflateBytes(data, needed, inflated, why))
       return fail(h.line("CompressedData"), "CompressedData", "'" + dataName + "': " + why);
     data = inflated;
   }

@@ -2,6 +2,7 @@
 // NRRD (teem's "nearly raw raster data"): a first line NRRD000x, "field: value" lines, then a
 // blank line and the data (.nrrd), or the data in the file named by "data file" (.nhdr).
 // Only scalar 3D (or 2D) images are read, with raw, text or gzip encoding.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -213,6 +214,10 @@ bool readNrrd(const std::string& path, VolumeImage& image, std::string& error) {
     return failField("space directions", "expected dimension = " + std::to_string(nd) +
                                              " vectors, got " +
                                              std::to_string(h.directions.size()));
+  const double voxels = h.sizes[0] * h.sizes[1] * (nd == 3 ? h.sizes[2] : 1.0);
+  if (voxels > kMaxVoxels)
+    return failField("sizes",
+                     "an image of " + std::to_string(voxels) + " voxels is beyond what can be read");
   image = VolumeImage{};
   image.size = {int(h.sizes[0]), int(h.sizes[1]), nd == 3 ? int(h.sizes[2]) : 1};
   const std::size_t count = image.voxelCount();
@@ -254,7 +259,9 @@ bool readNrrd(const std::string& path, VolumeImage& image, std::string& error) {
   std::string inflated;
   if (gzip) {
     std::string why;
-    if (!inflateBytes(data, inflated, why)) return failField("encoding", "'" + dataName + "': " + why);
+    const std::size_t needed = count * sampleBytes(*h.type) + std::size_t(std::max(0LL, h.byteSkip));
+    if (!inflateBytes(data, needed, inflated, why))
+      return failField("encoding", "'" + dataName + "': " + why);
     data = inflated;
   }
   if (text_) {

@@ -40,6 +40,11 @@ bool readRawVoxels(const std::string& path, const std::array<int, 3>& size, cons
     error = "raw voxels '" + path + "': the voxel size must be > 0 along each axis";
     return false;
   }
+  if (double(size[0]) * size[1] * size[2] > detail::kMaxVoxels) {
+    error = "raw voxels '" + path + "': " + std::to_string(double(size[0]) * size[1] * size[2]) +
+            " voxels is beyond what can be read";
+    return false;
+  }
   std::string bytes;
   if (!detail::readFileBytes(path, bytes, error)) return false;
   image = VolumeImage{};
