@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "core/Node.h"
 #include "simulation/Mapping.h"
@@ -14,11 +15,12 @@ namespace {
 
 using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
-// A state vector of 3D values as an (n x 3) matrix.
+// A state vector of 3D values as an (n x 3) matrix (read-only for a const vector).
 template <class Vector>
-Eigen::Map<RowMatrix> asMatrix(Vector& values) {
-  return Eigen::Map<RowMatrix>(values.empty() ? nullptr : values[0].data(),
-                               static_cast<Eigen::Index>(values.size()), 3);
+auto asMatrix(Vector& values) {
+  using Matrix = std::conditional_t<std::is_const_v<Vector>, const RowMatrix, RowMatrix>;
+  return Eigen::Map<Matrix>(values.empty() ? nullptr : values[0].data(),
+                            static_cast<Eigen::Index>(values.size()), 3);
 }
 
 // First mechanical mapping from `state` in the subtree below `node`.
@@ -136,7 +138,7 @@ void EmbeddedPointConstraint::bwdInit() {
 }
 
 Eigen::MatrixXd EmbeddedPointConstraint::pointsOf(const VecCoord& x) const {
-  return m_H * asMatrix(const_cast<VecCoord&>(x));
+  return m_H * asMatrix(x);
 }
 
 Vec3d EmbeddedPointConstraint::movementAt(double t) const {
