@@ -77,15 +77,13 @@ class NonUniformHexahedronFEMForceFieldAndMass final : public Mass<Vec3Types> {
       {},
       "Piecewise-linear map 'imageValue0 E0 imageValue1 E1 ...' (increasing image values, "
       "E > 0, constant beyond the ends) from the mean image value of a finest cell to its "
-      "Young's modulus; empty: youngModulus everywhere.",
-      {.unit = "Pa"}};
+      "Young's modulus (Pa); empty: youngModulus everywhere."};
   Data<std::vector<double>> d_densityTransfer{
       this,
       "densityTransfer",
       {},
       "Piecewise-linear map 'imageValue0 rho0 imageValue1 rho1 ...' (rho >= 0) from the mean "
-      "image value of a finest cell to its density; empty: density everywhere.",
-      {.unit = "kg/m^3"}};
+      "image value of a finest cell to its density (kg/m^3); empty: density everywhere."};
   Link<Topology> l_topology{this, "topology",
                             "The SparseGridTopology (default: the node's or above)."};
   Data<std::vector<double>> d_vertexMass{
