@@ -133,7 +133,7 @@ void EmbeddedPointConstraint::bwdInit() {
                    "than nodes in a cell): H H^T is singular and the points are imposed in the "
                    "least-squares sense (pseudo-inverse)",
                "indices");
-  m_p0 = pointsOf(mstate()->readCoord(VecId::position()));
+  m_p0 = pointsOf(mstate()->readCoord(VecId::restPosition()));
   m_ready = true;
 }
 

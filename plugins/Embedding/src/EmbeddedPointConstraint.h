@@ -24,7 +24,7 @@ class BaseMapping;
 ///                                                   points in place (forces likewise)
 ///
 /// so that CG and the implicit and static solvers keep the points exactly where imposed:
-/// p(t) = p0 + displacement + m(t), p0 the points' positions (H x) at init, m(t) the movement
+/// p(t) = p0 + displacement + m(t), p0 the points' rest positions (H x_rest), m(t) the movement
 /// interpolated between keyTimes (none: 0); v_p is the mean velocity over the step. When two
 /// points have dependent weights (the same point twice, or more points than nodes in a cell) G is
 /// singular: G^+ is then the pseudo-inverse (least squares, as the thesis' overconstrained case),
@@ -85,7 +85,7 @@ class EmbeddedPointConstraint final : public ProjectiveConstraint<Vec3Types> {
   bool m_ready = false;
   Eigen::SparseMatrix<double, Eigen::RowMajor> m_H;  ///< m x n
   Eigen::MatrixXd m_Gplus;                           ///< (H H^T)^+, m x m
-  Eigen::MatrixXd m_p0;                              ///< m x 3, the points at init
+  Eigen::MatrixXd m_p0;                              ///< m x 3, the points at rest (H x_rest)
   mutable bool m_reportedAssembled = false;
 };
 
