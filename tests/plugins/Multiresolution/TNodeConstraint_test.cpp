@@ -28,9 +28,14 @@ struct BeamMesh {
 
 // The mesh the topology component makes (same kernel), the points fixed at x = 0, and the
 // consistent nodal forces of the uniform traction: a quarter of each end face's area per node.
+// 4 coarse cells along x, and 1 x 1 (4 flags) or 2 x 2 (16 flags) across.
+int cellsAcross(const std::vector<char>& refined) { return refined.size() == 4 ? 1 : 2; }
+
 BeamMesh beamMesh(const std::vector<char>& refined) {
   BeamMesh m;
-  m.grid = multiresolution::makeMixedGrid({5, 2, 2}, Vec3d::Zero(), Vec3d(kLength, 1, 1), refined);
+  const int across = cellsAcross(refined) + 1;
+  m.grid = multiresolution::makeMixedGrid({5, across, across}, Vec3d::Zero(), Vec3d(kLength, 1, 1),
+                                          refined);
   const auto& p = m.grid.points;
   std::vector<Vec3d> force(p.size(), Vec3d::Zero());
   for (const Hexahedron& h : m.grid.hexahedra) {
@@ -68,8 +73,9 @@ std::string beamScene(
   <StaticSolver newton_iterations="1" maxNbIterationsLineSearch="1"/>
   )" + linearSolver +
          R"(
-  <MultiresolutionGridTopology name="grid" n="5 2 2" min="0 0 0" max="4 1 1" refineCells=")" +
-         refineCells(refined) + R"("/>
+  <MultiresolutionGridTopology name="grid" n="5 )" +
+         std::to_string(cellsAcross(refined) + 1) + " " + std::to_string(cellsAcross(refined) + 1) +
+         R"(" min="0 0 0" max="4 1 1" refineCells=")" + refineCells(refined) + R"("/>
   <MechanicalObject name="dofs"/>
   )" + (handleTNodes ? "<TNodeConstraint name=\"tNodes\"/>" : "") +
          R"(
@@ -131,6 +137,24 @@ TEST_F(TNodeConstraintTest, BeamInTractionHasTheSameEquilibriumCoarseFineAndMixe
     EXPECT_LT(all, 1e-10) << refineCells(*refined);
   }
   EXPECT_EQ(grid.tNodes.size(), 10u);  // the mixed beam: 5 on each of its two interfaces
+}
+
+TEST_F(TNodeConstraintTest, ACheckerboardOfRefinedCellsHoldsTheExactTraction) {
+  // 4 x 2 x 2 cells, every other one refined: T-nodes on faces and edges of every orientation,
+  // on the clamped and the loaded ends too (their nodal forces go to their parents).
+  std::vector<char> checkerboard(16);
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 4; ++i) checkerboard[i + 4 * (j + 2 * k)] = (i + j + k) % 2;
+  grid = beamMesh(checkerboard).grid;
+  ASSERT_TRUE(load(beamScene(checkerboard, true))) << messages();
+  ASSERT_TRUE(scene.step()) << messages();
+  EXPECT_EQ(scene.log().count(MessageLevel::warning), 0u) << messages();
+  const auto [shared, all] = errors();
+  RecordProperty("checkerboardError", scientific(all));
+  RecordProperty("checkerboardTNodes", std::to_string(grid.tNodes.size()));
+  EXPECT_GT(grid.tNodes.size(), 20u);
+  EXPECT_LT(all, 1e-10);
 }
 
 TEST_F(TNodeConstraintTest, WithoutTheTNodeHandlingTheMixedBeamIsWrong) {
