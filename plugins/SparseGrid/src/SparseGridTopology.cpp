@@ -364,6 +364,10 @@ void SparseGridTopology::doUpdate() {
       !d_fileTopology.value().original.empty() || !d_filename.value().original.empty();
   if (!imagePath.empty()) {
     // --- A volume image: the inside voxels' boxes, in the image's box ---
+    if (std::string(imageField) == "fileImage" && fromFile)
+      msgWarning("both fileImage and a mesh file (fileTopology or filename) are given: the grid "
+                 "is built from the image, the mesh file is ignored",
+                 "fileImage");
     image::VolumeImage image;
     std::vector<std::uint8_t> inside;
     if (!readImage(imagePath, imageField, image, inside) ||

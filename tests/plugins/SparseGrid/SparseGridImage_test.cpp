@@ -188,6 +188,15 @@ TEST_F(SparseGridImageTest, BadImageInputIsAnErrorNamingTheField) {
   EXPECT_EQ(m.field, "fileImage");
   EXPECT_NE(m.text.find("bad.mha"), std::string::npos) << m.text;
   scene.unload();
+  // An image and a surface file: the image wins, with a warning.
+  std::array<int, 3> counts{};
+  const std::string mhd = sphereMetaImage(8, counts);
+  const std::string obj = write("mesh.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  ASSERT_TRUE(load(wrap("<SparseGridTopology name=\"grid\" fileImage=\"" + mhd +
+                        "\" fileTopology=\"" + obj + "\" n=\"3 3 3\"/>\n")))
+      << messages();
+  EXPECT_EQ(find(MessageLevel::warning, "the mesh file is ignored").field, "fileImage");
+  scene.unload();
   // A missing image.
   EXPECT_FALSE(load(wrap("<SparseGridTopology name=\"grid\" fileImage=\"no/such/image.nrrd\" "
                          "n=\"3 3 3\"/>\n")));
