@@ -10,8 +10,11 @@
 // gravity since the start (springs and elements store energy >= 0, damping dissipates).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -73,7 +76,8 @@ std::string collisionFreeCopy(const std::string& relative, const std::string& co
 
 MechanicalState<Vec3Types>* stateAt(Scene& scene, const std::string& path) {
   std::string why;
-  auto* state = dynamic_cast<MechanicalState<Vec3Types>*>(resolveObjectPath(scene.root(), path, why));
+  auto* state =
+      dynamic_cast<MechanicalState<Vec3Types>*>(resolveObjectPath(scene.root(), path, why));
   EXPECT_NE(state, nullptr) << path << ": " << why;
   return state;
 }
@@ -150,8 +154,8 @@ std::vector<unsigned> indicesOf(Scene& scene, const std::string& path) {
 }
 
 TEST(SparseGridSofaScenes, SparseGridTopologyDragonsHangFromTheirBoxConstraints) {
-  std::string text = collisionFreeCopy("Component/Topology/Container/Grid/SparseGridTopology.scn",
-                                       "Surf", 3);
+  std::string text =
+      collisionFreeCopy("Component/Topology/Container/Grid/SparseGridTopology.scn", "Surf", 3);
   if (text.empty()) GTEST_SKIP() << kSofaDir << " is absent";
   ASSERT_NE(text.find("<BoxConstraint"), std::string::npos);
   Runtime runtime;
@@ -166,7 +170,8 @@ TEST(SparseGridSofaScenes, SparseGridTopologyDragonsHangFromTheirBoxConstraints)
     Body b(std::string("@/") + node + "/mechanicalObject", 0.5, {});
     // The unnamed components take their class name.
     std::string why;
-    Base* constraint = resolveObjectPath(scene.root(), std::string("@/") + node + "/boxConstraint", why);
+    Base* constraint =
+        resolveObjectPath(scene.root(), std::string("@/") + node + "/boxConstraint", why);
     ASSERT_NE(constraint, nullptr) << why;
     b.fixed = indicesOf(scene, std::string("@/") + node + "/boxConstraint.indices");
     EXPECT_GE(b.fixed.size(), 4u) << node;
@@ -200,7 +205,8 @@ TEST(SparseGridSofaScenes, LiverHexaFemTutorialSagsFromItsThreePoints) {
   ASSERT_NE(dofs, nullptr);
   const std::size_t n = dofs->size();
   // UniformMass totalMass="1".
-  std::vector<Body> bodies{Body("@/LiverHexaFEM/dofs", 1.0 / static_cast<double>(n), {80, 81, 166})};
+  std::vector<Body> bodies{
+      Body("@/LiverHexaFEM/dofs", 1.0 / static_cast<double>(n), {80, 81, 166})};
   const std::vector<double> sags = runAndCheck(scene, bodies, Vec3d(0, -9.81, 0), 100);
   ASSERT_EQ(sags.size(), 1u);
   std::printf("[ liver    ] %zu points, 3 fixed, largest sag %.3f\n", n, sags[0]);

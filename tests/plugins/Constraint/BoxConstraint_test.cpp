@@ -17,7 +17,8 @@ const char* kSolver = R"(
 // Five free points (no force between them), unit masses, gravity along -y.
 std::string scene(const std::string& constraint, const std::string& restPosition = "") {
   return std::string(R"(<Node name="root" gravity="0 -10 0" dt="0.01">)") + kSolver + R"(
-  <MechanicalObject name="dofs" position="0 0 0  1 0 0  2 0 0  3 0 0  4 0 0" )" + restPosition +
+  <MechanicalObject name="dofs" position="0 0 0  1 0 0  2 0 0  3 0 0  4 0 0" )" +
+         restPosition +
          R"(/>
   <UniformMass vertexMass="1"/>
   )" + constraint +

@@ -13,7 +13,10 @@
 
 #include <Eigen/Dense>
 #include <Eigen/SVD>
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
@@ -43,29 +46,44 @@ enum class Deformation { mirrored, flattened, line, point, scrambled };
 
 const char* name(Deformation d) {
   switch (d) {
-    case Deformation::mirrored: return "mirrored";
-    case Deformation::flattened: return "flattened";
-    case Deformation::line: return "line";
-    case Deformation::point: return "point";
-    case Deformation::scrambled: return "scrambled";
+    case Deformation::mirrored:
+      return "mirrored";
+    case Deformation::flattened:
+      return "flattened";
+    case Deformation::line:
+      return "line";
+    case Deformation::point:
+      return "point";
+    case Deformation::scrambled:
+      return "scrambled";
   }
   return "?";
 }
 
 /// The rest points X deformed: mirrored through a plane oblique to the edges (every element
 /// fully inverted), all on z = 0, all on the x axis, all at the origin, or scattered at random
-/// in the bounding box (reproducibly).
-std::vector<Vec3d> deform(const std::vector<Vec3d>& X, Deformation d) {
+/// in the bounding box (reproducibly, from `seed`).
+std::vector<Vec3d> deform(const std::vector<Vec3d>& X, Deformation d, unsigned seed = 7) {
   std::vector<Vec3d> x = X;
   const Vec3d normal = Vec3d(1, 2, 3).normalized();
-  std::mt19937 random(7);
+  std::mt19937 random(seed);
   std::uniform_real_distribution<double> unit(0, 1);
   for (Vec3d& p : x) switch (d) {
-      case Deformation::mirrored: p -= 2 * (p - Vec3d(0.5, 0.5, 0.5)).dot(normal) * normal; break;
-      case Deformation::flattened: p.z() = 0; break;
-      case Deformation::line: p.y() = p.z() = 0; break;
-      case Deformation::point: p.setZero(); break;
-      case Deformation::scrambled: p = Vec3d(unit(random), unit(random), unit(random)); break;
+      case Deformation::mirrored:
+        p -= 2 * (p - Vec3d(0.5, 0.5, 0.5)).dot(normal) * normal;
+        break;
+      case Deformation::flattened:
+        p.z() = 0;
+        break;
+      case Deformation::line:
+        p.y() = p.z() = 0;
+        break;
+      case Deformation::point:
+        p.setZero();
+        break;
+      case Deformation::scrambled:
+        for (int k = 0; k < 3; ++k) p[k] = unit(random);  // in a fixed order
+        break;
     }
   return x;
 }
@@ -114,8 +132,7 @@ std::string robustnessScene(const FemMesh& mesh, const Case& c) {
       std::string("youngModulus=\"1000\" poissonRatio=\"0.3\" method=\"") + c.method + "\"";
   const std::string body =
       std::string(c.component) == "HexahedronFEMForceField"
-          ? "<UniformMass totalMass=\"1\"/><HexahedronFEMForceField name=\"fem\" " + material +
-                "/>"
+          ? "<UniformMass totalMass=\"1\"/><HexahedronFEMForceField name=\"fem\" " + material + "/>"
           : "<HexahedronFEMForceFieldAndMass name=\"fem\" density=\"1\" " + material + "/>";
   return femScene(mesh, "hexahedra",
                   "<EulerImplicitSolver rayleighMass=\"1\" rayleighStiffness=\"0.05\"/>"
@@ -130,16 +147,25 @@ TEST_P(HexahedronRecovery, RecoversTheRestShapeFromEveryDegenerateStart) {
   const Case c = GetParam();
   const FemMesh mesh = makeBoxMesh(Vec3d(1, 1, 1), c.cells);
   double restVolume = 0;
-  for (const auto& h : mesh.hexahedra) restVolume += fem::computeHexahedronVolume(corners(mesh.points, h));
-  for (Deformation d : {Deformation::mirrored, Deformation::flattened, Deformation::line,
-                        Deformation::point, Deformation::scrambled}) {
-    SCOPED_TRACE(caseName(c) + ", " + name(d));
+  for (const auto& h : mesh.hexahedra)
+    restVolume += fem::computeHexahedronVolume(corners(mesh.points, h));
+  // Scattered points: five draws for the single hexahedron (grids: the next test).
+  std::vector<std::pair<Deformation, unsigned>> starts{{Deformation::mirrored, 7},
+                                                       {Deformation::flattened, 7},
+                                                       {Deformation::line, 7},
+                                                       {Deformation::point, 7}};
+  if (mesh.hexahedra.size() == 1)
+    for (unsigned seed = 1; seed <= 5; ++seed) starts.emplace_back(Deformation::scrambled, seed);
+  for (const auto& start : starts) {
+    const Deformation d = start.first;
+    const unsigned seed = start.second;
+    SCOPED_TRACE(caseName(c) + ", " + name(d) + " " + std::to_string(seed));
     Runtime runtime;
     Scene scene(runtime);
     ASSERT_TRUE(loadQuietly(scene, robustnessScene(mesh, c)));
     auto* dofs = objectAt<MechanicalState<Vec3Types>>(scene, "@/body/dofs");
     ASSERT_NE(dofs, nullptr);
-    dofs->writeCoord(VecId::position()) = deform(mesh.points, d);
+    dofs->writeCoord(VecId::position()) = deform(mesh.points, d, seed);
     const double startError = shapeError(mesh.points, dofs->readCoord(VecId::position()));
 
     // Released: finite at every step.
@@ -162,12 +188,12 @@ TEST_P(HexahedronRecovery, RecoversTheRestShapeFromEveryDegenerateStart) {
       volume += v;
       smallest = std::min(smallest, v / fem::computeHexahedronVolume(corners(mesh.points, h)));
     }
-    std::printf("[ recovery ] %-42s %-9s shape error %.3f -> %.1e, volume %+.1e, smallest "
-                "element volume ratio %.4f\n",
-                caseName(c).c_str(), name(d), startError, error, volume / restVolume - 1,
-                smallest);
-    EXPECT_LT(error, 1e-6);  // measured: 1e-16 to 1.4e-8 (scrambled)
-    EXPECT_NEAR(volume / restVolume, 1, 1e-6);  // measured: up to 3.3e-8
+    std::printf(
+        "[ recovery ] %-42s %-9s shape error %.3f -> %.1e, volume %+.1e, smallest "
+        "element volume ratio %.4f\n",
+        caseName(c).c_str(), name(d), startError, error, volume / restVolume - 1, smallest);
+    EXPECT_LT(error, 1e-6);                     // measured: 1e-16 to 1e-10
+    EXPECT_NEAR(volume / restVolume, 1, 1e-6);  // measured: up to 3e-10
     EXPECT_GT(smallest, 0.99);
   }
 }
@@ -183,17 +209,63 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"HexahedronFEMForceFieldAndMass", "large", Vec3i(3, 3, 3)},
                       Case{"HexahedronFEMForceFieldAndMass", "polar", Vec3i(3, 3, 3)}));
 
+// --- Grids from scattered points -----------------------------------------------------------
+
+TEST(HexahedronRobustness, ScatteredGridsComeBackRightWayOutButNotAlwaysToTheirRestShape) {
+  // From points scattered at random, a grid is finite at every step and ends with every element
+  // the right way out (no inversion survives), but it does not always reach its rest shape: it
+  // can stop in a spurious equilibrium where each element is close to its rest shape up to its
+  // own rotation, positively oriented, while the grid as a whole is folded. Measured over 20
+  // draws (HexahedronFEMForceField and ...AndMass alike): 2^3 grid, large 11/20 and polar 13/20
+  // recover (the others stop with shape error 1.04); 3^3 grid, large 20/20 and polar 9/20 (the
+  // others stop with shape error 0.52, element volume ratios >= 0.76). Asserted here on 6 draws:
+  // finite, right way out, and the 3^3 grid with large back to its rest shape.
+  for (int cells : {2, 3})
+    for (const char* method : {"large", "polar"}) {
+      const Case c{"HexahedronFEMForceField", method, Vec3i(cells, cells, cells)};
+      const FemMesh mesh = makeBoxMesh(Vec3d(1, 1, 1), c.cells);
+      int recovered = 0;
+      for (unsigned seed = 1; seed <= 6; ++seed) {
+        SCOPED_TRACE(caseName(c) + ", draw " + std::to_string(seed));
+        Runtime runtime;
+        Scene scene(runtime);
+        ASSERT_TRUE(loadQuietly(scene, robustnessScene(mesh, c)));
+        auto* dofs = objectAt<MechanicalState<Vec3Types>>(scene, "@/body/dofs");
+        ASSERT_NE(dofs, nullptr);
+        dofs->writeCoord(VecId::position()) = deform(mesh.points, Deformation::scrambled, seed);
+        for (int step = 0; step < 400; ++step) {
+          ASSERT_TRUE(scene.step()) << "step " << step;
+          for (const Vec3d& p : dofs->readCoord(VecId::position()))
+            ASSERT_TRUE(p.allFinite()) << "step " << step;
+        }
+        const std::vector<Vec3d>& x = dofs->readCoord(VecId::position());
+        double smallest = 1e300;
+        for (const auto& h : mesh.hexahedra)
+          smallest = std::min(smallest, fem::computeHexahedronVolume(corners(x, h)) /
+                                            fem::computeHexahedronVolume(corners(mesh.points, h)));
+        EXPECT_GT(smallest, 0.5);
+        const double error = shapeError(mesh.points, x);
+        recovered += error < 1e-6;
+        if (cells == 3 && std::string(method) == "large") {
+          EXPECT_LT(error, 1e-6);
+        }
+      }
+      std::printf("[ scattered] %-42s %d of 6 draws back to the rest shape\n", caseName(c).c_str(),
+                  recovered);
+    }
+}
+
 // --- Why polar falls back on the QR frame --------------------------------------------------
 
 TEST(HexahedronRobustness, PolarOfAnInvertedElementIsAReflectionSoTheQrFrameTakesOver) {
   const FemMesh mesh = makeBoxMesh(Vec3d(1, 1, 1), Vec3i(1, 1, 1));
   const HexahedronVectors X = corners(mesh.points, mesh.hexahedra[0]);
   fem::CorotationalHexahedron element;
-  ASSERT_EQ(fem::computeCorotationalHexahedron(X, fem::computeElasticityMatrix(fem::computeLameParameters(1000, 0.3)),
-                                               element),
+  ASSERT_EQ(fem::computeCorotationalHexahedron(
+                X, fem::computeElasticityMatrix(fem::computeLameParameters(1000, 0.3)), element),
             fem::ElementStatus::ok);
-  for (Deformation d : {Deformation::mirrored, Deformation::flattened, Deformation::line,
-                        Deformation::point}) {
+  for (Deformation d :
+       {Deformation::mirrored, Deformation::flattened, Deformation::line, Deformation::point}) {
     SCOPED_TRACE(name(d));
     const HexahedronVectors x = corners(deform(mesh.points, d), mesh.hexahedra[0]);
     const Eigen::Matrix3d F = fem::computeCentreDeformationGradient(element, x);
@@ -228,10 +300,10 @@ Eigen::MatrixXd assembledMass(const FemMesh& mesh, double density, bool lumped) 
   Runtime runtime;
   Scene scene(runtime);
   EXPECT_TRUE(loadQuietly(
-      scene, femScene(mesh, "hexahedra",
-                      "<HexahedronFEMForceFieldAndMass density=\"" + std::to_string(density) +
-                          "\" youngModulus=\"1000\" lumpedMass=\"" + (lumped ? "1" : "0") +
-                          "\"/>")));
+      scene,
+      femScene(mesh, "hexahedra",
+               "<HexahedronFEMForceFieldAndMass density=\"" + std::to_string(density) +
+                   "\" youngModulus=\"1000\" lumpedMass=\"" + (lumped ? "1" : "0") + "\"/>")));
   MechanicalOperations mop(scene.root(), scene.timing());
   MechanicalParams mp;
   mp.mFactor = 1;
@@ -256,8 +328,7 @@ TEST(HexahedronRobustness, ConsistentMassOfACubeIsTheAnalyticIntegral) {
       const double expected = rho * a * a * a / 216 * std::pow(2.0, 3 - differ);
       for (int k = 0; k < 3; ++k)
         for (int l = 0; l < 3; ++l)
-          largest = std::max(largest,
-                             std::abs(M(3 * i + k, 3 * j + l) - (k == l ? expected : 0)));
+          largest = std::max(largest, std::abs(M(3 * i + k, 3 * j + l) - (k == l ? expected : 0)));
     }
   EXPECT_LT(largest, 1e-12 * rho * a * a * a);
 }
