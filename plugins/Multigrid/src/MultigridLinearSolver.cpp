@@ -135,7 +135,10 @@ LinearSolveReport MultigridLinearSolver::solve(MechanicalOperations& mop,
                                                   l == 0 ? m_fixed : std::vector<char>{}));
   }
   const Eigen::SparseMatrix<double>& A = m_matrix.matrix();
-  m_cycle.setOperators(A, m_P, patternChanged);
+  {
+    ScopedPhase setup(mop.timing(), "multigridSetup");
+    m_cycle.setOperators(A, m_P, patternChanged);
+  }
 
   mop.gather(rhs, m_rhs);
   LinearSolveReport report;
