@@ -53,6 +53,16 @@ const Topology* NonUniformHexahedronFEMForceFieldAndMass::findSparseGrid() {
   return nullptr;
 }
 
+void NonUniformHexahedronFEMForceFieldAndMass::reportBadInput(const std::string& text,
+                                                              const std::string& field) {
+  // At init, bad input stops the component; while running, the change is refused and the
+  // matrices of the last valid material stay (as HexahedronFEMForceField does).
+  if (m_ready)
+    msgWarning(text + "; the change is not applied", field);
+  else
+    msgError(text, field);
+}
+
 void NonUniformHexahedronFEMForceFieldAndMass::init() {
   Mass<Vec3Types>::init();
   m_ready = false;
@@ -122,14 +132,14 @@ bool NonUniformHexahedronFEMForceFieldAndMass::computeCellMaterials(
   if (!d_youngModulusTransfer.value().empty()) {
     toYoung = nonuniform::TransferFunction::parse(d_youngModulusTransfer.value(), 0.0, true, why);
     if (!toYoung) {
-      msgError("Young's modulus transfer function: " + why, "youngModulusTransfer");
+      reportBadInput("Young's modulus transfer function: " + why, "youngModulusTransfer");
       return false;
     }
   }
   if (!d_densityTransfer.value().empty()) {
     toDensity = nonuniform::TransferFunction::parse(d_densityTransfer.value(), 0.0, false, why);
     if (!toDensity) {
-      msgError("density transfer function: " + why, "densityTransfer");
+      reportBadInput("density transfer function: " + why, "densityTransfer");
       return false;
     }
   }
@@ -140,7 +150,7 @@ bool NonUniformHexahedronFEMForceFieldAndMass::computeCellMaterials(
         "imageFile");
   image::VolumeImage volume;
   if (!image::readVolumeImage(d_imageFile.value().path(), volume, why)) {
-    msgError("cannot read the image: " + why, "imageFile");
+    reportBadInput("cannot read the image: " + why, "imageFile");
     return false;
   }
   // Each finest cell: the transfer of the mean image value over the cell (in the grid's frame).
@@ -158,35 +168,35 @@ bool NonUniformHexahedronFEMForceFieldAndMass::computeCellMaterials(
 bool NonUniformHexahedronFEMForceFieldAndMass::computeConstants() {
   const double E = d_youngModulus.value(), nu = d_poissonRatio.value(), rho = d_density.value();
   if (!(E > 0) || !std::isfinite(E)) {
-    msgError("expected a Young's modulus > 0, got " + number(E), "youngModulus");
+    reportBadInput("expected a Young's modulus > 0, got " + number(E), "youngModulus");
     return false;
   }
   if (!fem::isValidIsotropicMaterial(E, nu)) {
-    msgError("expected -1 < poissonRatio < 0.5 (0.5 is incompressible), got " + number(nu),
-             "poissonRatio");
+    reportBadInput("expected -1 < poissonRatio < 0.5 (0.5 is incompressible), got " + number(nu),
+                   "poissonRatio");
     return false;
   }
   if (!(rho > 0) || !std::isfinite(rho)) {
-    msgError("expected a density > 0, got " + number(rho), "density");
+    reportBadInput("expected a density > 0, got " + number(rho), "density");
     return false;
   }
   const auto available = m_topology->sparseGridFinerLevels();
   const int used = d_nbVirtualFinerLevels.value();
   if (used < 0 || std::size_t(used) > available.size()) {
-    msgError("asks for " + std::to_string(used) + " finer levels but the topology " +
-                 m_topology->path() + " keeps " + std::to_string(available.size()) +
-                 ": set nbVirtualFinerLevels=\"" + std::to_string(used) +
-                 "\" on the SparseGridTopology too",
-             "nbVirtualFinerLevels");
+    reportBadInput("asks for " + std::to_string(used) + " finer levels but the topology " +
+                       m_topology->path() + " keeps " + std::to_string(available.size()) +
+                       ": set nbVirtualFinerLevels=\"" + std::to_string(used) +
+                       "\" on the SparseGridTopology too",
+                   "nbVirtualFinerLevels");
     return false;
   }
   // The coarsest `used` levels: the last one's parents are the simulated cells.
   const auto levels = available.last(std::size_t(used));
   if (!levels.empty() && levels.back().parentsChildren.size() != m_hexahedra.size()) {
-    msgError("the finer levels of " + m_topology->path() + " have children for " +
-                 std::to_string(levels.back().parentsChildren.size()) + " cells, not for its " +
-                 std::to_string(m_hexahedra.size()) + " hexahedra",
-             "topology");
+    reportBadInput("the finer levels of " + m_topology->path() + " have children for " +
+                       std::to_string(levels.back().parentsChildren.size()) +
+                       " cells, not for its " + std::to_string(m_hexahedra.size()) + " hexahedra",
+                   "topology");
     return false;
   }
   if (!computeCellMaterials(levels)) return false;
@@ -229,9 +239,9 @@ bool NonUniformHexahedronFEMForceFieldAndMass::computeConstants() {
     std::string list;
     for (std::size_t k = 0; k < degenerate.size() && k < 10; ++k)
       list += (k ? ", " : "") + std::to_string(degenerate[k]);
-    msgError("degenerate rest shape (zero volume) of hexahedra " + list +
-                 (degenerate.size() > 10 ? ", ..." : ""),
-             "topology");
+    reportBadInput("degenerate rest shape (zero volume) of hexahedra " + list +
+                       (degenerate.size() > 10 ? ", ..." : ""),
+                   "topology");
     return false;
   }
   double total = 0;

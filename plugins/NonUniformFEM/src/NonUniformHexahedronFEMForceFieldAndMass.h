@@ -133,6 +133,8 @@ class NonUniformHexahedronFEMForceFieldAndMass final : public Mass<Vec3Types> {
   fem::RotationMethod rotationMethod() const { return toRotationMethod(d_method.value()); }
   /// The sparse grid's topology (link, else the node's or above); reports when there is none.
   const Topology* findSparseGrid();
+  /// An error at init; while running, a warning that the change is not applied.
+  void reportBadInput(const std::string& text, const std::string& field);
   /// The material of each finest cell (fraction, E, rho); false after reporting bad input.
   bool computeCellMaterials(std::span<const sparsegrid::FinerLevel> levels);
   /// Condenses every hexahedron and sets the element constants and masses; false after an error.

@@ -154,6 +154,38 @@ TEST(NonUniformHexahedronFEMForceFieldAndMass, ChildrenAreTheOctantsAtTheParents
   EXPECT_GT(checked, 100u);
 }
 
+TEST(NonUniformHexahedronFEMForceFieldAndMass, MaterialChangesWhileRunningTakeEffectAtTheNextStep) {
+  // K is linear in E and M in rho: doubling youngModulus doubles K, tripling density triples the
+  // mass; a refused value (a modulus of 0) is a warning naming the field, and the previous
+  // matrices stay.
+  Runtime runtime;
+  Scene scene(runtime);
+  ASSERT_TRUE(
+      loadQuietly(scene, sphereScene(4, 1,
+                                     "<NonUniformHexahedronFEMForceFieldAndMass name=\"fem\" "
+                                     "nbVirtualFinerLevels=\"1\" youngModulus=\"1000\" "
+                                     "density=\"10\"/>")));
+  const Eigen::SparseMatrix<double> K1 = assembleStiffness(scene);
+  const double m1 = numbers(dataText(scene, "/root/body/fem", "totalMass"))[0];
+  std::string why;
+  Base* fem = resolveObjectPath(scene.root(), "/root/body/fem", why);
+  ASSERT_NE(fem, nullptr) << why;
+  ASSERT_TRUE(fem->findData("youngModulus")->read("2000", why)) << why;
+  ASSERT_TRUE(fem->findData("density")->read("30", why)) << why;
+  const Eigen::SparseMatrix<double> K2 = assembleStiffness(scene);  // forces first: refreshed
+  EXPECT_LT((K2 - 2 * K1).norm(), 1e-12 * K2.norm());
+  EXPECT_NEAR(numbers(dataText(scene, "/root/body/fem", "totalMass"))[0], 3 * m1, 1e-12 * m1);
+  ASSERT_TRUE(fem->findData("youngModulus")->read("0", why)) << why;
+  const Eigen::SparseMatrix<double> K3 = assembleStiffness(scene);
+  EXPECT_EQ(scene.log().errorCount(), 0u);
+  bool warned = false;
+  for (const Message& m : scene.log().messages())
+    warned = warned || (m.level == MessageLevel::warning && m.field == "youngModulus" &&
+                        m.text.find("not applied") != std::string::npos);
+  EXPECT_TRUE(warned);
+  EXPECT_LT((K3 - K2).norm(), 1e-14 * K2.norm());
+}
+
 class RotatingNonUniform : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(RotatingNonUniform, PassesTheForceFieldTestWithinTheCorotationalBounds) {
