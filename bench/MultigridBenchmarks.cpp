@@ -16,16 +16,17 @@
 // method's time. The times include the assembly of K (the same for every method).
 // Beam049/cycles:N: the same beam with nu = 0.49, corotational elements (method large), 1 kg,
 // gravity 9.81, implicit Euler (dt 0.01, Rayleigh 0.1 / 0.1), MG4 with N V-cycles per step:
-// steps per processor second on one thread, and the relative error of the step's linear solve against
-// the reference on the system of the state reached (A = (1 + h rm) M - h (h + rs) K, b = h f + h^2 K v).
+// steps per processor second on one thread, and the relative error of the step's linear solve
+// against the reference on the system of the state reached (A = (1 + h rm) M - h (h + rs) K, b = h
+// f + h^2 K v).
 //
 // STROMA_BENCH_MULTIGRID_CELLS (default 32) sets the cells per axis; the ctest smoke run uses 8.
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Core>
 #include <chrono>
-#include <ctime>
 #include <cstdlib>
+#include <ctime>
 #include <map>
 #include <memory>
 #include <string>
@@ -67,16 +68,21 @@ std::string beamScene(double nu, const std::string& method, double g, double mas
                       const std::string& solvers) {
   const std::string n = std::to_string(cellsPerAxis() + 1);
   return "<Node name=\"root\" dt=\"0.01\" gravity=\"0 " + std::to_string(-g) +
-         " 0\">\n<Node name=\"Body\">\n" + solvers +
-         "\n<RegularGridTopology name=\"grid\" n=\"" + n + " " + n + " " + n +
+         " 0\">\n<Node name=\"Body\">\n" + solvers + "\n<RegularGridTopology name=\"grid\" n=\"" +
+         n + " " + n + " " + n +
          "\" min=\"0 0 0\" max=\"2 1 1\"/>\n"
          "<MechanicalObject name=\"dofs\" position=\"@grid.position\"/>\n"
-         "<UniformMass totalMass=\"" + std::to_string(mass) + "\"/>\n"
+         "<UniformMass totalMass=\"" +
+         std::to_string(mass) +
+         "\"/>\n"
          "<BoxROI name=\"clampedEnd\" box=\"-0.001 -1 -1  0.001 2 2\" "
          "position=\"@dofs.rest_position\"/>\n"
          "<FixedProjectiveConstraint indices=\"@clampedEnd.indices\"/>\n"
-         "<HexahedronFEMForceField method=\"" + method + "\" youngModulus=\"40000\" "
-         "poissonRatio=\"" + std::to_string(nu) + "\"/>\n</Node>\n</Node>\n";
+         "<HexahedronFEMForceField method=\"" +
+         method +
+         "\" youngModulus=\"40000\" "
+         "poissonRatio=\"" +
+         std::to_string(nu) + "\"/>\n</Node>\n</Node>\n";
 }
 
 /// A loaded scene and the Runtime it was made with (destroyed after it).
@@ -116,22 +122,21 @@ const char* const kCG = R"(template="CompressedRowSparseMatrixMat3x3d" tolerance
 std::string mgSolver(const std::string& name, int levels, const std::string& extra = "") {
   const std::string iterations =
       extra.find("iterations=") == std::string::npos ? "iterations=\"1\" " : "";
-  return "<MultigridLinearSolver name=\"" + name + "\" levels=\"" + std::to_string(levels) +
-         "\" " + iterations + "tolerance=\"0\" " + extra + "/>\n";
+  return "<MultigridLinearSolver name=\"" + name + "\" levels=\"" + std::to_string(levels) + "\" " +
+         iterations + "tolerance=\"0\" " + extra + "/>\n";
 }
 
 /// The static problem of table 5.2, loaded once, with its reference solution.
 struct Table52 {
   Table52()
-      : loaded(beamScene(0.3, "small", 1e6 * 9.81, 1.0,
-                         kReference +
-                             "<CGLinearSolver name=\"CGfast\" iterations=\"10\" " + kCG +
-                             "/>\n<CGLinearSolver name=\"CGmax\" iterations=\"150\" " + kCG +
-                             "/>\n" + mgSolver("MG1", 1) + mgSolver("MG2", 2) +
-                             mgSolver("MG3", 3) + mgSolver("MG4", 4) +
-                             mgSolver("FMG4", 4, "cycle=\"full\"") +
-                             mgSolver("MG4-FCG5", 4, "conjugateGradient=\"true\" iterations=\"5\"") +
-                             mgSolver("MG4-FCG10", 4, "conjugateGradient=\"true\" iterations=\"10\""))) {
+      : loaded(beamScene(
+            0.3, "small", 1e6 * 9.81, 1.0,
+            kReference + "<CGLinearSolver name=\"CGfast\" iterations=\"10\" " + kCG +
+                "/>\n<CGLinearSolver name=\"CGmax\" iterations=\"150\" " + kCG + "/>\n" +
+                mgSolver("MG1", 1) + mgSolver("MG2", 2) + mgSolver("MG3", 3) + mgSolver("MG4", 4) +
+                mgSolver("FMG4", 4, "cycle=\"full\"") +
+                mgSolver("MG4-FCG5", 4, "conjugateGradient=\"true\" iterations=\"5\"") +
+                mgSolver("MG4-FCG10", 4, "conjugateGradient=\"true\" iterations=\"10\""))) {
     if (!loaded.loaded) return;
     mop = std::make_unique<MechanicalOperations>(loaded.body(), loaded.scene->timing());
     f = mop->allocDeriv();
@@ -247,10 +252,10 @@ void table52Summary(benchmark::State& state) {
 void beam049(benchmark::State& state) {
   const int cycles = int(state.range(0));
   const std::string accelerated = state.range(1) ? "conjugateGradient=\"true\"" : "";
-  LoadedScene s(beamScene(
-      0.49, "large", 9.81, 1.0,
-      "<EulerImplicitSolver rayleighStiffness=\"0.1\" rayleighMass=\"0.1\"/>\n" +
-          mgSolver("mg", 4, accelerated) + kReference));
+  LoadedScene s(
+      beamScene(0.49, "large", 9.81, 1.0,
+                "<EulerImplicitSolver rayleighStiffness=\"0.1\" rayleighMass=\"0.1\"/>\n" +
+                    mgSolver("mg", 4, accelerated) + kReference));
   if (!s.loaded) {
     g_failed = true;
     state.SkipWithError(("the nu = 0.49 beam did not load: " + s.errors).c_str());

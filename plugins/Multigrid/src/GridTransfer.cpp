@@ -25,8 +25,8 @@ bool makeLatticeGrid(std::span<const Vec3d> points, std::span<const Hexahedron> 
   for (std::size_t e = 0; e < hexahedra.size(); ++e)
     for (Index v : hexahedra[e])
       if (v >= points.size()) {
-        error = "hexahedron " + std::to_string(e) + " uses point " + std::to_string(v) +
-                " of " + std::to_string(points.size());
+        error = "hexahedron " + std::to_string(e) + " uses point " + std::to_string(v) + " of " +
+                std::to_string(points.size());
         return false;
       }
 
@@ -36,18 +36,19 @@ bool makeLatticeGrid(std::span<const Vec3d> points, std::span<const Hexahedron> 
     lattice = *box;
   } else {
     const Hexahedron& h = hexahedra.front();
-    lattice.spacing = Vec3d(points[h[1]].x() - points[h[0]].x(),
-                            points[h[3]].y() - points[h[0]].y(),
-                            points[h[4]].z() - points[h[0]].z());
+    lattice.spacing =
+        Vec3d(points[h[1]].x() - points[h[0]].x(), points[h[3]].y() - points[h[0]].y(),
+              points[h[4]].z() - points[h[0]].z());
     lattice.origin = points[h[0]];
     for (const Hexahedron& hex : hexahedra)
       for (Index v : hex) lattice.origin = lattice.origin.cwiseMin(points[v]);
   }
   if (!(lattice.spacing.minCoeff() > 0)) {
-    error = "the hexahedra are not cells of an axis-aligned lattice with positive spacing "
-            "(first hexahedron's edges along x, y, z: " +
-            std::to_string(lattice.spacing.x()) + ", " + std::to_string(lattice.spacing.y()) +
-            ", " + std::to_string(lattice.spacing.z()) + ")";
+    error =
+        "the hexahedra are not cells of an axis-aligned lattice with positive spacing "
+        "(first hexahedron's edges along x, y, z: " +
+        std::to_string(lattice.spacing.x()) + ", " + std::to_string(lattice.spacing.y()) + ", " +
+        std::to_string(lattice.spacing.z()) + ")";
     return false;
   }
 
@@ -56,8 +57,7 @@ bool makeLatticeGrid(std::span<const Vec3d> points, std::span<const Hexahedron> 
   std::vector<std::array<long long, 3>> coordinates(hexahedra.size());
   std::array<long long, 3> extent{0, 0, 0};
   for (std::size_t e = 0; e < hexahedra.size(); ++e) {
-    const Vec3d local =
-        (points[hexahedra[e][0]] - lattice.origin).cwiseQuotient(lattice.spacing);
+    const Vec3d local = (points[hexahedra[e][0]] - lattice.origin).cwiseQuotient(lattice.spacing);
     for (int a = 0; a < 3; ++a) {
       coordinates[e][a] = std::llround(local[a]);
       extent[a] = std::max(extent[a], coordinates[e][a] + 1);
@@ -70,7 +70,8 @@ bool makeLatticeGrid(std::span<const Vec3d> points, std::span<const Hexahedron> 
           coordinates[e][0] < 0 || coordinates[e][1] < 0 || coordinates[e][2] < 0) {
         error = "hexahedron " + std::to_string(e) +
                 " is not a cell of the axis-aligned lattice of the first one (corner " +
-                std::to_string(q) + " is off its lattice point, or the corners are not in the "
+                std::to_string(q) +
+                " is off its lattice point, or the corners are not in the "
                 "order of TopologyTypes.h)";
         return false;
       }
@@ -89,8 +90,8 @@ bool makeLatticeGrid(std::span<const Vec3d> points, std::span<const Hexahedron> 
   grid.cells.resize(hexahedra.size());
   std::unordered_set<std::uint64_t> seen;
   for (std::size_t e = 0; e < hexahedra.size(); ++e) {
-    grid.cells[e] = lattice.cellIndex(int(coordinates[e][0]), int(coordinates[e][1]),
-                                      int(coordinates[e][2]));
+    grid.cells[e] =
+        lattice.cellIndex(int(coordinates[e][0]), int(coordinates[e][1]), int(coordinates[e][2]));
     if (!seen.insert(grid.cells[e]).second) {
       error = "hexahedron " + std::to_string(e) + " repeats the cell of an earlier one";
       return false;

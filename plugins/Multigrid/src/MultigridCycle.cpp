@@ -23,8 +23,7 @@ void MultigridCycle::setOperators(const SparseMatrix& A0, const std::vector<Spar
 
 int MultigridCycle::conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b,
                                       Eigen::VectorXd& x, int iterations, double tolerance,
-                                      Eigen::VectorXd& r, Eigen::VectorXd& p,
-                                      Eigen::VectorXd& q) {
+                                      Eigen::VectorXd& r, Eigen::VectorXd& p, Eigen::VectorXd& q) {
   r.noalias() = b - A * x;
   const double stop = tolerance * tolerance * b.squaredNorm();
   double rho = r.squaredNorm();
@@ -102,7 +101,8 @@ void MultigridCycle::fullCycle(Eigen::VectorXd& x, const Eigen::VectorXd& b,
   const int coarsest = levels() - 1;
   m_fullRhs.resize(levels());
   m_fullRhs[0] = b;
-  for (int l = 0; l < coarsest; ++l) m_fullRhs[l + 1].noalias() = m_P[l]->transpose() * m_fullRhs[l];
+  for (int l = 0; l < coarsest; ++l)
+    m_fullRhs[l + 1].noalias() = m_P[l]->transpose() * m_fullRhs[l];
   Eigen::VectorXd current = Eigen::VectorXd::Zero(m_fullRhs[coarsest].size());
   solveCoarsest(current, m_fullRhs[coarsest], settings);
   for (int l = coarsest - 1; l >= 0; --l) {

@@ -57,9 +57,9 @@ class MultigridCycle {
 
   /// `iterations` CG iterations on A x = b from x; stops earlier when ||r|| <= tolerance ||b||
   /// or when p.Ap is not positive (a converged or singular direction). Returns the iterations.
-  static int conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b,
-                               Eigen::VectorXd& x, int iterations, double tolerance,
-                               Eigen::VectorXd& r, Eigen::VectorXd& p, Eigen::VectorXd& q);
+  static int conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                               int iterations, double tolerance, Eigen::VectorXd& r,
+                               Eigen::VectorXd& p, Eigen::VectorXd& q);
 
  private:
   void solveCoarsest(Eigen::VectorXd& x, const Eigen::VectorXd& b, const CycleSettings& settings);

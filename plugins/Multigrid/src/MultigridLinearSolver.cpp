@@ -32,7 +32,8 @@ std::string number(double value) {
 
 void MultigridLinearSolver::init() {
   if (!findTopology(nullptr))
-    msgError("no grid found: no topology in " + (node() ? node()->path() : std::string("the node")) +
+    msgError("no grid found: no topology in " +
+                 (node() ? node()->path() : std::string("the node")) +
                  ", above it or below it; give topology=\"@path\" to a SparseGridTopology, a "
                  "RegularGridTopology or a hexahedral lattice",
              "topology");
@@ -131,8 +132,8 @@ LinearSolveReport MultigridLinearSolver::solve(MechanicalOperations& mop,
     m_fixed = std::move(fixed);
     m_P.clear();
     for (std::size_t l = 0; l < m_pointP.size(); ++l)
-      m_P.push_back(multigrid::expandProlongation(m_pointP[l], 3,
-                                                  l == 0 ? m_fixed : std::vector<char>{}));
+      m_P.push_back(
+          multigrid::expandProlongation(m_pointP[l], 3, l == 0 ? m_fixed : std::vector<char>{}));
   }
   const Eigen::SparseMatrix<double>& A = m_matrix.matrix();
   {

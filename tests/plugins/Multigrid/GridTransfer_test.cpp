@@ -3,11 +3,12 @@
 // fields exactly on sparse grids with holes and odd sizes, bad meshes are refused, and the
 // Galerkin operator P^T K P of a linear hexahedral grid equals the stiffness assembled directly
 // on the coarse grid (the nesting of seed 001 ch. 4 sec. 3).
+#include "GridTransfer.h"
+
 #include <gtest/gtest.h>
 
 #include <map>
 
-#include "GridTransfer.h"
 #include "MultigridScenes.h"
 #include "SparseGrid.h"
 #include "topology/Topology.h"
@@ -58,9 +59,9 @@ TEST(GridTransfer, ProlongationReproducesLinearFieldsOnEveryLevel) {
     const Eigen::MatrixXd interpolated = P * coarseField;
     double worst = 0;
     for (std::size_t i = 0; i < fine.points.size(); ++i)
-      worst = std::max(worst, (interpolated.row(Eigen::Index(i)).transpose() -
-                               linearField(fine.points[i]))
-                                  .lpNorm<Eigen::Infinity>());
+      worst = std::max(worst,
+                       (interpolated.row(Eigen::Index(i)).transpose() - linearField(fine.points[i]))
+                           .lpNorm<Eigen::Infinity>());
     EXPECT_LT(worst, 1e-12) << "level " << levels;
     // Every fine point has at most 8 weights, all positive.
     for (Eigen::Index i = 0; i < P.outerSize(); ++i) {

@@ -35,8 +35,8 @@ TEST(MultigridLinearSolver, OneCycleOnTheCantileverOfTable52) {
   const std::string solvers =
       "<CGLinearSolver name=\"reference\" iterations=\"5000\" tolerance=\"1e-13\" " + cg +
       "/>\n<CGLinearSolver name=\"cg10\" tolerance=\"0\" iterations=\"10\" " + cg +
-      "/>\n<CGLinearSolver name=\"cg20\" tolerance=\"0\" iterations=\"20\" " + cg + "/>\n" +
-      mg(1) + mg(2) + mg(4) + mg(4, "cycle=\"full\"", "fmg");
+      "/>\n<CGLinearSolver name=\"cg20\" tolerance=\"0\" iterations=\"20\" " + cg + "/>\n" + mg(1) +
+      mg(2) + mg(4) + mg(4, "cycle=\"full\"", "fmg");
   LoadedScene s(cantileverScene(kCells16, 2.0, 40000, 0.3, solvers));
   ASSERT_TRUE(s.loaded) << s.log();
   std::vector<LinearSolveReport> reports;
@@ -48,8 +48,8 @@ TEST(MultigridLinearSolver, OneCycleOnTheCantileverOfTable52) {
   const double cg10 = relativeError(u[1], reference), cg20 = relativeError(u[2], reference);
   const double mg1 = relativeError(u[3], reference), mg2 = relativeError(u[4], reference);
   const double mg4 = relativeError(u[5], reference), fmg4 = relativeError(u[6], reference);
-  std::printf("relative errors: CG10 %.3g CG20 %.3g MG1 %.3g MG2 %.3g MG4 %.3g FMG4 %.3g\n",
-              cg10, cg20, mg1, mg2, mg4, fmg4);
+  std::printf("relative errors: CG10 %.3g CG20 %.3g MG1 %.3g MG2 %.3g MG4 %.3g FMG4 %.3g\n", cg10,
+              cg20, mg1, mg2, mg4, fmg4);
   EXPECT_GT(cg10, 0.8);  // 10 iterations barely start the deflection
   EXPECT_LT(mg1, 0.03);
   EXPECT_LT(mg2, 0.1);
@@ -116,7 +116,8 @@ TEST(MultigridLinearSolver, ImplicitEulerFollowsSparseLDL) {
   auto run = [](const std::string& solver) {
     LoadedScene s(cantileverScene(Vec3i(8, 4, 4), 2.0, 4000, 0.3,
                                   "<EulerImplicitSolver rayleighStiffness=\"0.1\" "
-                                  "rayleighMass=\"0.1\"/>\n" + solver,
+                                  "rayleighMass=\"0.1\"/>\n" +
+                                      solver,
                                   "large", 9.81, 10.0, 0.02));
     EXPECT_TRUE(s.loaded) << s.log();
     for (int n = 0; n < 20; ++n) EXPECT_TRUE(s.scene->step()) << s.log();
@@ -124,8 +125,8 @@ TEST(MultigridLinearSolver, ImplicitEulerFollowsSparseLDL) {
     return s.body().get<MechanicalState<Vec3Types>>()->readCoord(VecId::position());
   };
   const std::vector<Vec3d> ldl = run("<SparseLDLSolver/>");
-  const std::vector<Vec3d> multigrid = run(
-      "<MultigridLinearSolver levels=\"2\" iterations=\"50\" tolerance=\"1e-10\"/>");
+  const std::vector<Vec3d> multigrid =
+      run("<MultigridLinearSolver levels=\"2\" iterations=\"50\" tolerance=\"1e-10\"/>");
   ASSERT_EQ(ldl.size(), multigrid.size());
   double difference = 0, tipDrop = 0;
   for (std::size_t i = 0; i < ldl.size(); ++i) {

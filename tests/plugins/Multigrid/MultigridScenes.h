@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "core/Message.h"
-#include "core/Types.h"
 #include "core/Runtime.h"
+#include "core/Types.h"
 #include "simulation/MechanicalOperations.h"
 #include "simulation/Scene.h"
 #include "simulation/Solvers.h"
@@ -28,8 +28,8 @@ inline std::string cantileverScene(const Vec3i& cells, double length, double you
                                    const std::string& method = "small", double g = 1e6 * 9.81,
                                    double mass = 1.0, double dt = 0.01) {
   auto n = [&](int a) { return std::to_string(cells[a] + 1); };
-  return "<Node name=\"root\" dt=\"" + std::to_string(dt) + "\" gravity=\"0 " +
-         std::to_string(-g) + " 0\">\n<Node name=\"Body\">\n" + solvers + "\n" +
+  return "<Node name=\"root\" dt=\"" + std::to_string(dt) + "\" gravity=\"0 " + std::to_string(-g) +
+         " 0\">\n<Node name=\"Body\">\n" + solvers + "\n" +
          "<RegularGridTopology name=\"grid\" n=\"" + n(0) + " " + n(1) + " " + n(2) +
          "\" min=\"0 0 0\" max=\"" + std::to_string(length) + " 1 1\"/>\n" +
          "<MechanicalObject name=\"dofs\" position=\"@grid.position\"/>\n" +
@@ -44,9 +44,7 @@ inline std::string cantileverScene(const Vec3i& cells, double length, double you
 
 /// A loaded scene and the Runtime it was made with (destroyed after it).
 struct LoadedScene {
-  explicit LoadedScene(const std::string& xml) {
-    loaded = scene->loadString(xml);
-  }
+  explicit LoadedScene(const std::string& xml) { loaded = scene->loadString(xml); }
   ~LoadedScene() { scene.reset(); }
   std::string log() const {
     std::string text;
