@@ -66,17 +66,18 @@ struct LoadedScene {
 };
 
 /// The static problem K u = f of the loaded beam (f: gravity, projected by the clamp), solved by
-/// each linear solver of the body in scene order.
+/// each linear solver of the body in scene order; other factors give (m M + k K) u = f.
 inline std::vector<Eigen::VectorXd> solveStatic(LoadedScene& s,
-                                                std::vector<LinearSolveReport>* reports = nullptr) {
+                                                std::vector<LinearSolveReport>* reports = nullptr,
+                                                double mFactor = 0, double kFactor = -1) {
   Node& body = s.body();
   MechanicalOperations mop(body, s.scene->timing());
   const VecId f = mop.allocDeriv(), u = mop.allocDeriv();
   mop.computeForce(MechanicalParams{}, f);
   mop.projectResponse(f);
-  MechanicalParams mp;  // A = -df/dx = K, as StaticSolver
-  mp.mFactor = 0;
-  mp.kFactor = -1;
+  MechanicalParams mp;  // by default A = -df/dx = K, as StaticSolver
+  mp.mFactor = mFactor;
+  mp.kFactor = kFactor;
   std::vector<Eigen::VectorXd> solutions;
   for (LinearSolver* solver : body.getAll<LinearSolver>()) {
     mop.vOp(u, VecId::null(), VecId::null(), 0.0);
