@@ -127,8 +127,7 @@ GridMesh sparseGrid(const Placement& placement, double h, double oversize = 0) {
 /// Tip deflection with NonUniformHexahedronFEMForceFieldAndMass on the grid of
 /// sparseGridXml(placement, h, oversize, levels): stiffness and mass condensed from `levels`
 /// finer levels (seed 001 ch. 4 sec. 3), its own gravity; clamp and solve as tipDeflection.
-double nonUniformTipDeflection(const Placement& placement, double h, double oversize,
-                               int levels) {
+double nonUniformTipDeflection(const Placement& placement, double h, double oversize, int levels) {
   const std::string grid = sparseGridXml(placement, h, oversize, levels);
   const GridMesh mesh = buildGrid(grid);
   std::vector<unsigned> fixed;
@@ -149,10 +148,11 @@ double nonUniformTipDeflection(const Placement& placement, double h, double over
               "relative_correction_tolerance_threshold=\"1e-5\" "
               "absolute_residual_tolerance_threshold=\"0\" "
               "relative_residual_tolerance_threshold=\"1e-5\"/>\n<SparseLDLSolver/>\n" +
-              grid + "\n<MechanicalObject name=\"dofs\"/>\n"
-                     "<NonUniformHexahedronFEMForceFieldAndMass method=\"large\" "
-                     "nbVirtualFinerLevels=\"" + std::to_string(levels) +
-              "\" youngModulus=\"" + std::to_string(kYoung) +
+              grid +
+              "\n<MechanicalObject name=\"dofs\"/>\n"
+              "<NonUniformHexahedronFEMForceFieldAndMass method=\"large\" "
+              "nbVirtualFinerLevels=\"" +
+              std::to_string(levels) + "\" youngModulus=\"" + std::to_string(kYoung) +
               "\" poissonRatio=\"0\" density=\"" + std::to_string(kDensity) +
               "\"/>\n<FixedProjectiveConstraint indices=\"" + listText(fixed) +
               "\"/>\n</Node>\n</Node>\n"))
@@ -202,9 +202,9 @@ TEST(CantileverGrids, RegularHexahedraConvergeToBeamTheory) {
   const std::vector<double> large = regularRatios("HexahedronFEMForceField", "large");
   checkConvergence(large, {0.36, 0.13, 0.04}, 2.5);
   EXPECT_NEAR(large[2] + (large[2] - large[1]) / 3, 1, 0.01);
-  const double polar = tipDeflection(regularGrid(0.5), {}, "HexahedronFEMForceField", "polar", 0,
-                                     kGravity) /
-                       beamTheory(0, kGravity);
+  const double polar =
+      tipDeflection(regularGrid(0.5), {}, "HexahedronFEMForceField", "polar", 0, kGravity) /
+      beamTheory(0, kGravity);
   EXPECT_NEAR(polar, large[2], 1e-4);
 }
 
@@ -215,9 +215,9 @@ TEST(CantileverGrids, RegularTetrahedraConvergeToBeamTheory) {
   // (FemValidation_test: 0.93 there), which this test leaves to that one for its cost.
   const std::vector<double> large = regularRatios("TetrahedronFEMForceField", "large");
   checkConvergence(large, {0.80, 0.50, 0.20}, 1.5);
-  const double polar = tipDeflection(regularGrid(0.5), {}, "TetrahedronFEMForceField", "polar",
-                                     0, kGravity) /
-                       beamTheory(0, kGravity);
+  const double polar =
+      tipDeflection(regularGrid(0.5), {}, "TetrahedronFEMForceField", "polar", 0, kGravity) /
+      beamTheory(0, kGravity);
   EXPECT_NEAR(polar, large[2], 1e-4);
 }
 
@@ -242,8 +242,7 @@ TEST(CantileverGrids, CorotationalVariantsAgreeForAFixedPoissonRatio) {
   for (const Variant& v : variants) {
     ratios.push_back(tipDeflection(grid, {}, v.field, v.method, 0.3, kGravity) /
                      beamTheory(0.3, kGravity));
-    std::printf("%s %s, nu = 0.3: deflection / theory = %.4f\n", v.field, v.method,
-                ratios.back());
+    std::printf("%s %s, nu = 0.3: deflection / theory = %.4f\n", v.field, v.method, ratios.back());
   }
   EXPECT_NEAR(ratios[1], ratios[0], 1e-4);
   EXPECT_NEAR(ratios[3], ratios[2], 1e-4);
@@ -260,9 +259,9 @@ TEST(CantileverGrids, AlignedSparseGridConvergesToBeamTheory) {
   const double reference = beamTheory(0, kGravity);
   std::vector<double> ratios;
   for (double h : {2.0, 1.0, 0.5}) {
-    ratios.push_back(tipDeflection(sparseGrid({}, h), {}, "HexahedronFEMForceField", "large", 0,
-                                   kGravity) /
-                     reference);
+    ratios.push_back(
+        tipDeflection(sparseGrid({}, h), {}, "HexahedronFEMForceField", "large", 0, kGravity) /
+        reference);
     std::printf("sparse grid, aligned, h = %g: deflection / theory = %.4f\n", h, ratios.back());
   }
   checkConvergence(ratios, {0.32, 0.12, 0.03}, 2.0);
@@ -282,11 +281,11 @@ TEST(CantileverGrids, RotatedGridStaysCloseToTheAlignedOne) {
   // here lies partly further from the neutral axis, and the clamp's cells are cut obliquely).
   const double aligned = alignedDeflection();
   Placement rotated;
-  rotated.frame = (Eigen::AngleAxisd(M_PI / 6, Vec3d::UnitZ()) *
-                   Eigen::AngleAxisd(M_PI / 6, Vec3d::UnitX()))
-                      .toRotationMatrix();
-  const double turned = tipDeflection(sparseGrid(rotated, 0.5), rotated,
-                                      "HexahedronFEMForceField", "large", 0, kGravity);
+  rotated.frame =
+      (Eigen::AngleAxisd(M_PI / 6, Vec3d::UnitZ()) * Eigen::AngleAxisd(M_PI / 6, Vec3d::UnitX()))
+          .toRotationMatrix();
+  const double turned = tipDeflection(sparseGrid(rotated, 0.5), rotated, "HexahedronFEMForceField",
+                                      "large", 0, kGravity);
   std::printf("aligned %.4f, rotated %.4f (deflection / theory)\n",
               aligned / beamTheory(0, kGravity), turned / beamTheory(0, kGravity));
   EXPECT_NEAR(turned / aligned, 1, 0.10);
@@ -297,8 +296,8 @@ TEST(CantileverGrids, OversizedGridStaysCloseToTheAlignedOne) {
   // per axis so that every face of the beam cuts cells. Measured deflection / theory: aligned
   // 0.9950, oversized 0.9181 (7.7 % stiffer, for the same reasons as the rotated grid).
   const double aligned = alignedDeflection();
-  const double oversized = tipDeflection(sparseGrid({}, 0.5, 1.5), {}, "HexahedronFEMForceField",
-                                         "large", 0, kGravity);
+  const double oversized =
+      tipDeflection(sparseGrid({}, 0.5, 1.5), {}, "HexahedronFEMForceField", "large", 0, kGravity);
   std::printf("aligned %.4f, oversized %.4f (deflection / theory)\n",
               aligned / beamTheory(0, kGravity), oversized / beamTheory(0, kGravity));
   EXPECT_NEAR(oversized / aligned, 1, 0.10);
@@ -321,10 +320,11 @@ TEST(CantileverGrids, FinerLevelsBringTheOversizedGridCloser) {
   const double aligned1 = nonUniformTipDeflection({}, 1, 0, 1);
   const double oversized0 = nonUniformTipDeflection({}, 1, 1.5, 0);
   const double oversized1 = nonUniformTipDeflection({}, 1, 1.5, 1);
-  std::printf("cells of 1 m, deflection / theory: aligned %.4f (E x fraction), %.4f (non-uniform, "
-              "0 levels), %.4f (1 level); oversized %.4f (0 levels), %.4f (1 level)\n",
-              fractions / reference, aligned0 / reference, aligned1 / reference,
-              oversized0 / reference, oversized1 / reference);
+  std::printf(
+      "cells of 1 m, deflection / theory: aligned %.4f (E x fraction), %.4f (non-uniform, "
+      "0 levels), %.4f (1 level); oversized %.4f (0 levels), %.4f (1 level)\n",
+      fractions / reference, aligned0 / reference, aligned1 / reference, oversized0 / reference,
+      oversized1 / reference);
   EXPECT_NEAR(aligned0 / fractions, 1, 1e-3);
   EXPECT_NEAR(oversized1 / aligned1, 1, 0.02);
   EXPECT_LT(std::abs(oversized1 / aligned1 - 1), std::abs(oversized0 / aligned0 - 1) / 3);

@@ -124,11 +124,11 @@ void checkCircularity(Plates plates, double maxDeviation) {
     ASSERT_FALSE(grid.hexahedra.empty());
     for (double strain : {0.1, 0.2, 0.3}) {
       const RadiusStatistics s = compress(grid, strain, plates);
-      std::printf("%s plates, %s grid, %2.0f %%: mean radius %.5f m (x %.4f; R (1 + nu e) x %.4f, "
-                  "incompressible x %.4f), min %.5f, max %.5f, std %.6f m = %.4f %%\n",
-                  platesName, names[g], 100 * strain, s.mean, s.mean / kRadius, 1 + kNu * strain,
-                  1 / std::sqrt(1 - strain), s.min, s.max, s.deviation,
-                  100 * s.deviation / s.mean);
+      std::printf(
+          "%s plates, %s grid, %2.0f %%: mean radius %.5f m (x %.4f; R (1 + nu e) x %.4f, "
+          "incompressible x %.4f), min %.5f, max %.5f, std %.6f m = %.4f %%\n",
+          platesName, names[g], 100 * strain, s.mean, s.mean / kRadius, 1 + kNu * strain,
+          1 / std::sqrt(1 - strain), s.min, s.max, s.deviation, 100 * s.deviation / s.mean);
       EXPECT_LT(s.deviation, maxDeviation * s.mean) << names[g] << " " << strain;
       EXPECT_GT(s.mean, kRadius * (1 + kNu * strain) - 1e-4) << names[g] << " " << strain;
     }

@@ -102,8 +102,9 @@ inline GridMesh buildGrid(const std::string& topologyXml) {
   Runtime runtime;
   Scene scene(runtime);
   GridMesh mesh;
-  if (!loadQuietly(scene, "<Node name=\"root\" gravity=\"0 0 0\" dt=\"1\">\n<Node name=\"body\">\n" +
-                              topologyXml + "\n</Node>\n</Node>\n"))
+  if (!loadQuietly(scene,
+                   "<Node name=\"root\" gravity=\"0 0 0\" dt=\"1\">\n<Node name=\"body\">\n" +
+                       topologyXml + "\n</Node>\n</Node>\n"))
     return mesh;
   auto* topology = objectAt<Topology>(scene, "@/body/grid");
   if (topology == nullptr) return mesh;
@@ -161,9 +162,9 @@ inline std::optional<Embedded> locate(const GridMesh& mesh, const Vec3d& p) {
     const double u = t.x(), v = t.y(), w = t.z();
     Embedded e;
     e.nodes = h;
-    e.weights = {(1 - u) * (1 - v) * (1 - w), u * (1 - v) * (1 - w), u * v * (1 - w),
-                 (1 - u) * v * (1 - w),       (1 - u) * (1 - v) * w, u * (1 - v) * w,
-                 u * v * w,                   (1 - u) * v * w};
+    e.weights = {
+        (1 - u) * (1 - v) * (1 - w), u * (1 - v) * (1 - w), u * v * (1 - w), (1 - u) * v * (1 - w),
+        (1 - u) * (1 - v) * w,       u * (1 - v) * w,       u * v * w,       (1 - u) * v * w};
     return e;
   }
   return std::nullopt;
@@ -225,21 +226,22 @@ inline StaticResult solveStatic(const StaticProblem& p) {
   xml.precision(17);
   xml << "<Node name=\"root\" gravity=\"0 0 0\" dt=\"1\">\n<Node name=\"body\">\n"
       << "<StaticSolver name=\"solver\" newton_iterations=\"" << p.newtonIterations
-      << "\" absolute_correction_tolerance_threshold=\"0\" relative_correction_tolerance_threshold=\""
+      << "\" absolute_correction_tolerance_threshold=\"0\" "
+         "relative_correction_tolerance_threshold=\""
       << p.tolerance << "\" absolute_residual_tolerance_threshold=\"0\" "
       << "relative_residual_tolerance_threshold=\"" << p.tolerance << "\"/>\n"
       << "<SparseLDLSolver/>\n"
       << "<MeshTopology name=\"mesh\" hexahedra=\"" << elementsText(p.mesh.hexahedra) << "\"/>\n"
       << "<MechanicalObject name=\"dofs\" rest_position=\"" << pointsText(p.mesh.points)
-      << "\" position=\"" << pointsText(p.initial.empty() ? p.mesh.points : p.initial)
-      << "\"/>\n"
-      << "<" << p.forceField << " method=\"" << p.method << "\" poissonRatio=\""
-      << p.poissonRatio << "\" youngModulus=\""
+      << "\" position=\"" << pointsText(p.initial.empty() ? p.mesh.points : p.initial) << "\"/>\n"
+      << "<" << p.forceField << " method=\"" << p.method << "\" poissonRatio=\"" << p.poissonRatio
+      << "\" youngModulus=\""
       << (uniform ? listText(std::vector<double>{p.youngModulus}) : listText(moduli)) << "\"/>\n";
   if (!p.loaded.empty())
     xml << "<ConstantForceField name=\"load\" indices=\"" << listText(p.loaded) << "\" forces=\""
         << pointsText(p.loads) << "\"/>\n";
-  if (!p.fixed.empty()) xml << "<FixedProjectiveConstraint indices=\"" << listText(p.fixed) << "\"/>\n";
+  if (!p.fixed.empty())
+    xml << "<FixedProjectiveConstraint indices=\"" << listText(p.fixed) << "\"/>\n";
   for (const auto& partial : p.partial)
     xml << "<PartialFixedProjectiveConstraint indices=\"" << listText(partial.indices)
         << "\" fixedDirections=\"" << partial.directions[0] << ' ' << partial.directions[1] << ' '

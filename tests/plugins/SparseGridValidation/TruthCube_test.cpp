@@ -48,8 +48,8 @@ struct BeadErrors {
 /// plates hold the faces' nodes in x and y too, else they slide freely (one bottom node fixed,
 /// one its neighbour along y fixed in x). Errors of the beads: |rest + simulated displacement
 /// at the rest position (trilinear) - measured position|.
-BeadErrors simulate(const std::vector<Bead>& beads, const Vec3d& centre, double travel,
-                    bool bonded, const std::string& method, bool strained12) {
+BeadErrors simulate(const std::vector<Bead>& beads, const Vec3d& centre, double travel, bool bonded,
+                    const std::string& method, bool strained12) {
   const Vec3d lo = centre - Vec3d::Constant(kEdge / 2), hi = centre + Vec3d::Constant(kEdge / 2);
   StaticProblem p;
   p.mesh = buildGrid("<RegularGridTopology name=\"grid\" n=\"11 11 11\" min=\"" + vecText(lo) +
@@ -90,7 +90,8 @@ BeadErrors simulate(const std::vector<Bead>& beads, const Vec3d& centre, double 
 }
 
 TEST(TruthCube, BeadErrorsMatchTheSeed) {
-  const auto file = std::filesystem::path(STROMA_SHARED_DIR) / "data/truthcube/uniaxial_positions.csv";
+  const auto file =
+      std::filesystem::path(STROMA_SHARED_DIR) / "data/truthcube/uniaxial_positions.csv";
   if (!std::filesystem::exists(file))
     GTEST_SKIP() << "Truth Cube data absent (" << file.string() << "): ../shared not installed";
   const std::vector<Bead> beads = readBeads(file);
@@ -117,10 +118,11 @@ TEST(TruthCube, BeadErrorsMatchTheSeed) {
     for (const char* method : {"large", "polar"}) {
       const BeadErrors bonded = simulate(beads, centre, c.travel, true, method, c.strained12);
       const BeadErrors sliding = simulate(beads, centre, c.travel, false, method, c.strained12);
-      std::printf("%.1f %% (%s): bonded plates mean %.3f mm, max %.3f mm; frictionless mean "
-                  "%.3f mm, max %.3f mm\n",
-                  c.strained12 ? 12.5 : 5.0, method, 1e3 * bonded.mean, 1e3 * bonded.max,
-                  1e3 * sliding.mean, 1e3 * sliding.max);
+      std::printf(
+          "%.1f %% (%s): bonded plates mean %.3f mm, max %.3f mm; frictionless mean "
+          "%.3f mm, max %.3f mm\n",
+          c.strained12 ? 12.5 : 5.0, method, 1e3 * bonded.mean, 1e3 * bonded.max,
+          1e3 * sliding.mean, 1e3 * sliding.max);
       EXPECT_LT(bonded.mean, c.meanBound) << method << " travel " << c.travel;
       EXPECT_LT(bonded.max, c.maxBound) << method << " travel " << c.travel;
       EXPECT_LT(bonded.mean, sliding.mean) << "bonded plates must match the data better";
