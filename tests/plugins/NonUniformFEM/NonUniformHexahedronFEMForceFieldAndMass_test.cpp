@@ -336,14 +336,15 @@ TEST(NonUniformHexahedronFEMForceFieldAndMass, SofasSceneWithoutItsCollisionComp
   EXPECT_NEAR(drop, 0.5 * 9.81 * 36, 0.05 * 0.5 * 9.81 * 36);
 }
 
-/// A sphere's grid of 12^3 cells (condensed from one finer level, consistent mass) hanging from
-/// 4 points under gravity, implicit Euler and 25 CG iterations: positions after 3 steps.
+/// A sphere's grid of 9^3 cells (about 400 kept: the element loops split in tasks of 128)
+/// (condensed from one finer level, consistent mass) hanging from 4 points under gravity, implicit
+/// Euler and 25 CG iterations: positions after 3 steps.
 std::vector<Vec3d> simulateSphere(int threads) {
   Runtime runtime;
   Scene scene(runtime);
   scene.setThreadCount(threads);
   if (!loadQuietly(
-          scene, sphereScene(13, 1,
+          scene, sphereScene(10, 1,
                              "<EulerImplicitSolver/><CGLinearSolver iterations=\"25\" "
                              "tolerance=\"1e-12\" threshold=\"1e-30\"/>"
                              "<NonUniformHexahedronFEMForceFieldAndMass nbVirtualFinerLevels=\"1\" "
@@ -365,7 +366,7 @@ TEST(NonUniformHexahedronFEMForceFieldAndMass, SameResultsBitForBitWithOneOrTwoT
   // Element loops in parallel, each element writing its own corners, then per-vertex sums in
   // element order: the thread count does not change a bit.
   const std::vector<Vec3d> one = simulateSphere(1), two = simulateSphere(2);
-  ASSERT_GT(one.size(), 500u);
+  ASSERT_GT(one.size(), 300u);
   ASSERT_EQ(one.size(), two.size());
   EXPECT_EQ(std::memcmp(one.data(), two.data(), one.size() * sizeof(Vec3d)), 0);
   for (const Vec3d& p : one) ASSERT_TRUE(p.allFinite());
