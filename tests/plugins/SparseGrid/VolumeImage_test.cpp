@@ -322,6 +322,9 @@ TEST_F(VolumeImageTest, NrrdHeaderErrorsNameFileLineAndField) {
             {"dim.nrrd", "line 3", "dimension"});
   readError(write("vector.nrrd", "NRRD0004\ntype: uchar\ndimension: 4\nsizes: 3 2 2 2\n\n"),
             {"vector.nrrd", "line 3", "dimension", "multi-channel"});
+  readError(write("rgb.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 3 2 2\n"
+                             "kinds: RGB-color domain domain\n\n"),
+            {"rgb.nrrd", "line 5", "kinds", "multi-channel"});
   readError(write("empty.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 0\n\n"),
             {"empty.nrrd", "line 4", "sizes", "empty image (zero voxels)"});
   readError(write("endian.nrrd", head + "encoding: raw\n\n0123456789abcdef"),

@@ -186,6 +186,22 @@ bool readNrrd(const std::string& path, VolumeImage& image, std::string& error) {
       if (!parseNumbers(value, 1, v, why) || v[0] < 0 || v[0] != std::floor(v[0]))
         return fail(line, field, "'" + value + "': expected a line count >= 0");
       h.lineSkip = (long long)v[0];
+    } else if (field == "kinds") {
+      // A non-spatial axis (RGB-color, 3-vector, list...) makes a multi-channel image.
+      std::size_t axis = 0, at = 0;
+      while (at < value.size()) {
+        const std::size_t end = std::min(value.find_first_of(" \t", at), value.size());
+        const std::string kind = lowercase(value.substr(at, end - at));
+        if (!kind.empty()) {
+          if (kind != "domain" && kind != "space" && kind != "time" && kind != "none" &&
+              kind != "???")
+            return fail(line, field,
+                        "axis " + std::to_string(axis) + " is '" + kind +
+                            "': a multi-channel or vector image; only scalar images are read");
+          ++axis;
+        }
+        at = end + 1;
+      }
     } else if (field == "space dimension") {
       if (!parseNumbers(value, 1, v, why) || (v[0] != 3 && v[0] != 2))
         return fail(line, field, "'" + value + "': only 3D space is read");
