@@ -37,8 +37,7 @@ AxisOverlaps overlapAxis(int voxels, double voxelLo, double voxelSize, int cells
     const double lo = voxelLo + v * voxelSize, hi = lo + voxelSize;
     // Clamped as reals first: a voxel far outside the box must not overflow an int.
     const int first = int(std::clamp(std::floor((lo - cellLo) / cellSize), 0.0, double(cells)));
-    const int last =
-        int(std::clamp(std::floor((hi - cellLo) / cellSize), -1.0, double(cells - 1)));
+    const int last = int(std::clamp(std::floor((hi - cellLo) / cellSize), -1.0, double(cells - 1)));
     mine.clear();
     double lost = 0;  // sliver length waiting for a neighbouring piece of this voxel
     for (int c = first; c <= last; ++c) {
@@ -194,9 +193,8 @@ bool buildSparseGridFromVoxels(const image::VolumeImage& image,
       if (type != kept) continue;
       grid.cells.push_back(cell);
       grid.types.push_back(type);
-      grid.fractions.push_back(type == CellType::full
-                                   ? 1.0
-                                   : std::clamp(in[cell] / cellVolume, 0.0, 1.0));
+      grid.fractions.push_back(
+          type == CellType::full ? 1.0 : std::clamp(in[cell] / cellVolume, 0.0, 1.0));
     }
   if (grid.cells.empty()) {
     error = "no inside voxel overlaps the grid's box";

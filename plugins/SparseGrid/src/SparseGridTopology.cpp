@@ -327,8 +327,7 @@ bool SparseGridTopology::readImage(const std::string& path, const char* field,
                "voxelSize");
       return false;
     }
-    if (!image::readRawVoxels(path, {res.x(), res.y(), res.z()}, size, 0.5 * size, image,
-                              error)) {
+    if (!image::readRawVoxels(path, {res.x(), res.y(), res.z()}, size, 0.5 * size, image, error)) {
       msgError("cannot read the voxels: " + error, field);
       return false;
     }
@@ -365,9 +364,10 @@ void SparseGridTopology::doUpdate() {
   if (!imagePath.empty()) {
     // --- A volume image: the inside voxels' boxes, in the image's box ---
     if (std::string(imageField) == "fileImage" && fromFile)
-      msgWarning("both fileImage and a mesh file (fileTopology or filename) are given: the grid "
-                 "is built from the image, the mesh file is ignored",
-                 "fileImage");
+      msgWarning(
+          "both fileImage and a mesh file (fileTopology or filename) are given: the grid "
+          "is built from the image, the mesh file is ignored",
+          "fileImage");
     image::VolumeImage image;
     std::vector<std::uint8_t> inside;
     if (!readImage(imagePath, imageField, image, inside) ||
@@ -377,11 +377,12 @@ void SparseGridTopology::doUpdate() {
     }
     std::string error;
     if (!sparsegrid::buildSparseGridFromVoxels(image, inside, box, m_grid, error)) {
-      msgError("'" + imagePath + "': " + error + " [min, max] = [" + describe(box.origin) + ", " +
-                   describe(box.origin + Vec3d(box.cells[0], box.cells[1], box.cells[2])
-                                             .cwiseProduct(box.spacing)) +
-                   "]",
-               "min");
+      msgError(
+          "'" + imagePath + "': " + error + " [min, max] = [" + describe(box.origin) + ", " +
+              describe(box.origin +
+                       Vec3d(box.cells[0], box.cells[1], box.cells[2]).cwiseProduct(box.spacing)) +
+              "]",
+          "min");
       clearOutputs();
       return;
     }

@@ -4,13 +4,14 @@
 // boxes with the cell; a voxelized sphere against the analytic volume; cell types on a grid
 // aligned with the voxels; two labels; a box larger than the image; virtual finer levels; no
 // inside voxel is an error.
+#include "ImageGrid.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cmath>
 #include <numbers>
 
-#include "ImageGrid.h"
 #include "SparseGrid.h"
 
 namespace stroma::sparsegrid {
@@ -77,9 +78,8 @@ double bruteForceFraction(const image::VolumeImage& im, const std::vector<std::u
 
 TEST(ImageGrid, VoxelizedSphereVolumeIsExactAndCloseToTheSphere) {
   const double r = 0.8;
-  const image::VolumeImage im = makeImage(40, 0.05, Vec3d::Constant(-0.975), [&](const Vec3d& p) {
-    return p.norm() <= r ? 1.0 : 0.0;
-  });
+  const image::VolumeImage im = makeImage(
+      40, 0.05, Vec3d::Constant(-0.975), [&](const Vec3d& p) { return p.norm() <= r ? 1.0 : 0.0; });
   const std::vector<std::uint8_t> inside = selectVoxels(im, {});
   // 12 cells across 40 voxels: cell boundaries fall inside voxels.
   const GridBox box = imageBox(im, 12);
@@ -161,9 +161,8 @@ TEST(ImageGrid, TwoLabelsPartitionTheVolume) {
 
 TEST(ImageGrid, BoxLargerThanTheImage) {
   // All voxels inside; the grid's box overhangs the image by half a cell on each side.
-  const image::VolumeImage im = makeImage(4, 0.25, Vec3d::Constant(0.125), [](const Vec3d&) {
-    return 1.0;
-  });
+  const image::VolumeImage im =
+      makeImage(4, 0.25, Vec3d::Constant(0.125), [](const Vec3d&) { return 1.0; });
   GridBox box;
   box.cells = {3, 3, 3};
   box.spacing = Vec3d::Constant(0.5);
@@ -180,11 +179,9 @@ TEST(ImageGrid, BoxLargerThanTheImage) {
 }
 
 TEST(ImageGrid, VirtualFinerLevelsKeepTheVolume) {
-  const image::VolumeImage im = makeImage(32, 1.0 / 32, Vec3d::Constant(1.0 / 64),
-                                          [](const Vec3d& p) {
-                                            return (p - Vec3d(0.5, 0.5, 0.5)).norm() < 0.37 ? 3.0
-                                                                                           : 1.0;
-                                          });
+  const image::VolumeImage im = makeImage(
+      32, 1.0 / 32, Vec3d::Constant(1.0 / 64),
+      [](const Vec3d& p) { return (p - Vec3d(0.5, 0.5, 0.5)).norm() < 0.37 ? 3.0 : 1.0; });
   const auto inside = selectVoxels(im, threshold(2.0));
   SparseGrid fine;
   std::string error;
@@ -200,8 +197,8 @@ TEST(ImageGrid, NoInsideVoxelIsAnError) {
   const VoxelSelection selection = threshold(2.0);
   SparseGrid grid;
   std::string error;
-  EXPECT_FALSE(buildSparseGridFromVoxels(im, selectVoxels(im, selection), imageBox(im, 2), grid,
-                                         error));
+  EXPECT_FALSE(
+      buildSparseGridFromVoxels(im, selectVoxels(im, selection), imageBox(im, 2), grid, error));
   EXPECT_NE(error.find("no inside voxel"), std::string::npos) << error;
   EXPECT_EQ(selection.describe(), "voxel >= 2 (threshold)");
   EXPECT_EQ(labels({1, 4}).describe(), "voxel with a label among 1 4");
@@ -209,11 +206,9 @@ TEST(ImageGrid, NoInsideVoxelIsAnError) {
 
 TEST(ImageGrid, BuildsHundredThousandCellsQuickly) {
   // 128^3 voxels (2.1e6) into 47^3 = 103823 cells. Timing printed, not asserted.
-  const image::VolumeImage im = makeImage(128, 1.0 / 128, Vec3d::Constant(1.0 / 256),
-                                          [](const Vec3d& p) {
-                                            return (p - Vec3d(0.5, 0.5, 0.5)).norm() < 0.45 ? 1.0
-                                                                                           : 0.0;
-                                          });
+  const image::VolumeImage im = makeImage(
+      128, 1.0 / 128, Vec3d::Constant(1.0 / 256),
+      [](const Vec3d& p) { return (p - Vec3d(0.5, 0.5, 0.5)).norm() < 0.45 ? 1.0 : 0.0; });
   const auto inside = selectVoxels(im, {});
   const auto start = std::chrono::steady_clock::now();
   SparseGrid grid;

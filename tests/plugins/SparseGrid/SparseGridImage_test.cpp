@@ -76,8 +76,8 @@ TEST_F(SparseGridImageTest, MetaImageGridHasTheVoxelsVolume) {
   std::array<int, 3> counts{};
   const std::string file = sphereMetaImage(24, counts);
   // 9 cells across 24 voxels: cell faces cut voxels. Default selection: voxels > 0.
-  ASSERT_TRUE(load(wrap("<SparseGridTopology name=\"grid\" fileImage=\"" + file +
-                        "\" n=\"10 10 10\"/>\n")))
+  ASSERT_TRUE(
+      load(wrap("<SparseGridTopology name=\"grid\" fileImage=\"" + file + "\" n=\"10 10 10\"/>\n")))
       << messages();
   EXPECT_EQ(warnings(), 0u) << messages();
   const double voxel = std::pow(1.0 / 24, 3);
@@ -104,10 +104,11 @@ TEST_F(SparseGridImageTest, ThresholdLabelsAndSofasFilename) {
   // threshold: voxels >= 150 (the inner ball only); filename (SOFA's name) with .mhd.
   ASSERT_TRUE(load(wrap("<SparseGridTopology name=\"inner\" filename=\"" + mhd +
                         "\" n=\"9 9 9\" threshold=\"150\"/>\n"
-                        "<SparseGridTopology name=\"shell\" fileTopology=\"" + mhd +
+                        "<SparseGridTopology name=\"shell\" fileTopology=\"" +
+                        mhd +
                         "\" n=\"9 9 9\" labels=\"100\"/>\n"
-                        "<SparseGridTopology name=\"both\" fileImage=\"" + mhd +
-                        "\" n=\"9 9 9\" labels=\"100 200\" threshold=\"1000\"/>\n")))
+                        "<SparseGridTopology name=\"both\" fileImage=\"" +
+                        mhd + "\" n=\"9 9 9\" labels=\"100 200\" threshold=\"1000\"/>\n")))
       << messages();
   EXPECT_EQ(warnings(), 0u) << messages();
   EXPECT_NEAR(filledVolume("/inner"), counts[2] * voxel, 1e-12);
@@ -121,13 +122,14 @@ TEST_F(SparseGridImageTest, ThresholdLabelsAndSofasFilename) {
 TEST_F(SparseGridImageTest, NrrdAndVirtualFinerLevels) {
   std::array<int, 3> counts{};
   const std::string voxels = sphereVoxels(32, counts);
-  const std::string file = write(
-      "sphere.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 32 32 32\n"
-                     "spacings: 0.03125 0.03125 0.03125\nencoding: raw\n\n" + voxels);
+  const std::string file = write("sphere.nrrd",
+                                 "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 32 32 32\n"
+                                 "spacings: 0.03125 0.03125 0.03125\nencoding: raw\n\n" +
+                                     voxels);
   ASSERT_TRUE(load(wrap("<SparseGridTopology name=\"fine\" fileImage=\"" + file +
                         "\" n=\"21 21 21\"/>\n"
-                        "<SparseGridTopology name=\"coarse\" fileImage=\"" + file +
-                        "\" n=\"6 6 6\" nbVirtualFinerLevels=\"2\"/>\n")))
+                        "<SparseGridTopology name=\"coarse\" fileImage=\"" +
+                        file + "\" n=\"6 6 6\" nbVirtualFinerLevels=\"2\"/>\n")))
       << messages();
   // Without "space origin", voxel (0,0,0) is centred at 0: the box starts half a voxel lower.
   const double inside = (counts[1] + counts[2]) * std::pow(0.03125, 3);
@@ -170,8 +172,8 @@ TEST_F(SparseGridImageTest, NoInsideVoxelIsAnError) {
 TEST_F(SparseGridImageTest, BadImageInputIsAnErrorNamingTheField) {
   // A .raw without its resolution.
   const std::string raw = write("plain.raw", std::string(8, '\1'));
-  EXPECT_FALSE(load(wrap("<SparseGridTopology name=\"grid\" filename=\"" + raw +
-                         "\" n=\"3 3 3\"/>\n")));
+  EXPECT_FALSE(
+      load(wrap("<SparseGridTopology name=\"grid\" filename=\"" + raw + "\" n=\"3 3 3\"/>\n")));
   EXPECT_EQ(find(MessageLevel::error, "give dataResolution").field, "dataResolution");
   scene.unload();
   // A .raw shorter than its resolution says.
@@ -180,10 +182,11 @@ TEST_F(SparseGridImageTest, BadImageInputIsAnErrorNamingTheField) {
   EXPECT_EQ(find(MessageLevel::error, "expected 27").field, "filename");
   scene.unload();
   // A header with an unknown type: the file, the line and the header field.
-  const std::string bad = write("bad.mha", "NDims = 3\nDimSize = 2 2 2\nElementType = MET_HALF\n"
-                                           "ElementDataFile = LOCAL\n12345678");
-  EXPECT_FALSE(load(wrap("<SparseGridTopology name=\"grid\" fileImage=\"" + bad +
-                         "\" n=\"3 3 3\"/>\n")));
+  const std::string bad = write("bad.mha",
+                                "NDims = 3\nDimSize = 2 2 2\nElementType = MET_HALF\n"
+                                "ElementDataFile = LOCAL\n12345678");
+  EXPECT_FALSE(
+      load(wrap("<SparseGridTopology name=\"grid\" fileImage=\"" + bad + "\" n=\"3 3 3\"/>\n")));
   const Message m = find(MessageLevel::error, "line 3: ElementType");
   EXPECT_EQ(m.field, "fileImage");
   EXPECT_NE(m.text.find("bad.mha"), std::string::npos) << m.text;
@@ -198,8 +201,9 @@ TEST_F(SparseGridImageTest, BadImageInputIsAnErrorNamingTheField) {
   EXPECT_EQ(find(MessageLevel::warning, "the mesh file is ignored").field, "fileImage");
   scene.unload();
   // A missing image.
-  EXPECT_FALSE(load(wrap("<SparseGridTopology name=\"grid\" fileImage=\"no/such/image.nrrd\" "
-                         "n=\"3 3 3\"/>\n")));
+  EXPECT_FALSE(
+      load(wrap("<SparseGridTopology name=\"grid\" fileImage=\"no/such/image.nrrd\" "
+                "n=\"3 3 3\"/>\n")));
   EXPECT_EQ(find(MessageLevel::error, "image.nrrd").field, "fileImage");
 }
 
@@ -235,9 +239,9 @@ TEST_F(SparseGridImageTest, BundledVolumeImageSceneRuns) {
     lowest = std::min(lowest, dy);
     if (t->positions()[i].x() <= 0.02) fixedMotion = std::max(fixedMotion, std::abs(dy));
   }
-  EXPECT_LT(lowest, -1e-5);          // the free end sags under gravity
-  EXPECT_GT(lowest, -0.05);          // but the organ holds
-  EXPECT_EQ(fixedMotion, 0.0);       // the fixed end stays
+  EXPECT_LT(lowest, -1e-5);     // the free end sags under gravity
+  EXPECT_GT(lowest, -0.05);     // but the organ holds
+  EXPECT_EQ(fixedMotion, 0.0);  // the fixed end stays
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 // every sample type, byte order, encoding and layout are written here and read back exactly;
 // axes given with negative directions are flipped in place; each bad header is an error naming
 // the file, the line and the field.
+#include "image/VolumeImage.h"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -16,8 +18,6 @@
 #include <limits>
 #include <string>
 #include <vector>
-
-#include "image/VolumeImage.h"
 
 #ifdef STROMA_HAS_ZLIB
 #include <zlib.h>
@@ -34,7 +34,8 @@ std::string pack(const std::vector<double>& values, bool bigEndian) {
     const T t = static_cast<T>(v);
     std::array<char, sizeof(T)> raw;
     std::memcpy(raw.data(), &t, sizeof(T));
-    if (bigEndian != (std::endian::native == std::endian::big)) std::reverse(raw.begin(), raw.end());
+    if (bigEndian != (std::endian::native == std::endian::big))
+      std::reverse(raw.begin(), raw.end());
     bytes.append(raw.data(), raw.size());
   }
   return bytes;
@@ -92,10 +93,11 @@ class VolumeImageTest : public ::testing::Test {
   template <typename T>
   void metaImageRoundTrip(const std::string& metType, bool bigEndian) {
     const std::vector<double> values = sampleValues<T>();
-    const std::string header = "ObjectType = Image\nNDims = 3\nDimSize = 3 2 2\n"
-                               "ElementSpacing = 0.5 0.25 2\nOffset = -1 2 3.5\n"
-                               "ElementType = " + metType + "\nElementByteOrderMSB = " +
-                               (bigEndian ? "True" : "False") + "\n";
+    const std::string header =
+        "ObjectType = Image\nNDims = 3\nDimSize = 3 2 2\n"
+        "ElementSpacing = 0.5 0.25 2\nOffset = -1 2 3.5\n"
+        "ElementType = " +
+        metType + "\nElementByteOrderMSB = " + (bigEndian ? "True" : "False") + "\n";
     const std::string stem = metType + (bigEndian ? "_big" : "_little");
     write(stem + ".raw", pack<T>(values, bigEndian));
     const std::string mhd = write(stem + ".mhd", header + "ElementDataFile = " + stem + ".raw\n");
@@ -117,7 +119,8 @@ class VolumeImageTest : public ::testing::Test {
     const std::vector<double> values = sampleValues<T>();
     const std::string header = "NRRD0004\n# a comment\ntype: " + nrrdType +
                                "\ndimension: 3\nsizes: 3 2 2\nspacings: 0.5 0.25 2\n"
-                               "endian: " + (bigEndian ? "big" : "little") +
+                               "endian: " +
+                               (bigEndian ? "big" : "little") +
                                "\nencoding: raw\nspace origin: (-1,2,3.5)\nkey:=value\n";
     std::string stem = nrrdType + (bigEndian ? "_big" : "_little");
     std::replace(stem.begin(), stem.end(), ' ', '_');
@@ -171,24 +174,26 @@ TEST_F(VolumeImageTest, NrrdRoundTripsEveryTypeAndByteOrder) {
 TEST_F(VolumeImageTest, NrrdTextEncodingAndSkips) {
   // Text data, with line skip in a detached file.
   write("text.txt", "a line to skip\n1 2 3\n4, 5, 6\n-7 8.5 9 10 11 12\n");
-  const VolumeImage text = read(write(
-      "text.nhdr",
-      "NRRD0004\ntype: float\ndimension: 3\nsizes: 3 2 2\nencoding: ascii\n"
-      "line skip: 1\ndata file: text.txt\n"));
+  const VolumeImage text =
+      read(write("text.nhdr",
+                 "NRRD0004\ntype: float\ndimension: 3\nsizes: 3 2 2\nencoding: ascii\n"
+                 "line skip: 1\ndata file: text.txt\n"));
   EXPECT_EQ(text.values, (std::vector<double>{1, 2, 3, 4, 5, 6, -7, 8.5, 9, 10, 11, 12}));
   EXPECT_EQ(text.spacing, Vec3d::Ones());
   // byte skip -1: the data ends the file, after any preamble.
   const std::vector<double> values{1, 2, 3, 4, 5, 6, 7, 8};
   write("tail.raw", "PREAMBLE" + pack<std::uint16_t>(values, true));
-  const VolumeImage tail = read(write(
-      "tail.nhdr", "NRRD0004\ntype: ushort\ndimension: 3\nsizes: 2 2 2\nendian: big\n"
-                   "encoding: raw\nbyte skip: -1\ndata file: tail.raw\n"));
+  const VolumeImage tail =
+      read(write("tail.nhdr",
+                 "NRRD0004\ntype: ushort\ndimension: 3\nsizes: 2 2 2\nendian: big\n"
+                 "encoding: raw\nbyte skip: -1\ndata file: tail.raw\n"));
   EXPECT_EQ(tail.values, values);
   // MetaImage HeaderSize: bytes skipped at the start of the data file.
   write("skip.raw", "0123" + pack<std::int16_t>(values, false));
-  const VolumeImage skipped = read(write(
-      "skip.mhd", "NDims = 3\nDimSize = 2 2 2\nElementType = MET_SHORT\nHeaderSize = 4\n"
-                  "ElementDataFile = skip.raw\n"));
+  const VolumeImage skipped =
+      read(write("skip.mhd",
+                 "NDims = 3\nDimSize = 2 2 2\nElementType = MET_SHORT\nHeaderSize = 4\n"
+                 "ElementDataFile = skip.raw\n"));
   EXPECT_EQ(skipped.values, values);
 }
 
@@ -207,9 +212,11 @@ TEST_F(VolumeImageTest, GzipAndZlibCompressedData) {
   ASSERT_EQ(deflate(&s, Z_FINISH), Z_STREAM_END);
   gz.resize(s.total_out);
   deflateEnd(&s);
-  const VolumeImage nrrd = read(write(
-      "gz.nrrd", "NRRD0004\ntype: int32\ndimension: 3\nsizes: 3 2 2\nendian: little\n"
-                 "encoding: gzip\n\n" + gz));
+  const VolumeImage nrrd =
+      read(write("gz.nrrd",
+                 "NRRD0004\ntype: int32\ndimension: 3\nsizes: 3 2 2\nendian: little\n"
+                 "encoding: gzip\n\n" +
+                     gz));
   EXPECT_EQ(nrrd.values, values);
 
   uLongf size = compressBound(uLong(raw.size()));
@@ -219,13 +226,16 @@ TEST_F(VolumeImageTest, GzipAndZlibCompressedData) {
             Z_OK);
   zlib.resize(size);
   write("z.zraw", zlib);
-  const VolumeImage meta = read(write(
-      "z.mhd", "NDims = 3\nDimSize = 3 2 2\nElementType = MET_INT\nCompressedData = True\n"
-               "ElementDataFile = z.zraw\n"));
+  const VolumeImage meta =
+      read(write("z.mhd",
+                 "NDims = 3\nDimSize = 3 2 2\nElementType = MET_INT\nCompressedData = True\n"
+                 "ElementDataFile = z.zraw\n"));
   EXPECT_EQ(meta.values, values);
   // Truncated compressed data is an error, not garbage.
-  readError(write("cut.nrrd", "NRRD0004\ntype: int32\ndimension: 3\nsizes: 3 2 2\n"
-                              "endian: little\nencoding: gzip\n\n" + gz.substr(0, gz.size() / 2)),
+  readError(write("cut.nrrd",
+                  "NRRD0004\ntype: int32\ndimension: 3\nsizes: 3 2 2\n"
+                  "endian: little\nencoding: gzip\n\n" +
+                      gz.substr(0, gz.size() / 2)),
             {"cut.nrrd", "encoding"});
 }
 #endif
@@ -233,19 +243,22 @@ TEST_F(VolumeImageTest, GzipAndZlibCompressedData) {
 TEST_F(VolumeImageTest, NegativeDirectionsAreFlippedInPlace) {
   // x stored from +x to -x: voxel i of the file is at 10 - 2 i.
   const std::vector<double> values{1, 2, 3, 4, 5, 6};
-  const VolumeImage image = read(write(
-      "flip.nrrd",
-      "NRRD0005\ntype: uint8\ndimension: 3\nsizes: 3 2 1\nencoding: raw\nspace: left-posterior-superior\n"
-      "space directions: (-2,0,0) (0,1,0) (0,0,0.5)\nspace origin: (10,0,0)\n\n" +
-          pack<std::uint8_t>(values, false)));
+  const VolumeImage image =
+      read(write("flip.nrrd",
+                 "NRRD0005\ntype: uint8\ndimension: 3\nsizes: 3 2 1\nencoding: raw\nspace: "
+                 "left-posterior-superior\n"
+                 "space directions: (-2,0,0) (0,1,0) (0,0,0.5)\nspace origin: (10,0,0)\n\n" +
+                     pack<std::uint8_t>(values, false)));
   EXPECT_EQ(image.spacing, Vec3d(2, 1, 0.5));
   EXPECT_EQ(image.origin, Vec3d(6, 0, 0));
   EXPECT_EQ(image.values, (std::vector<double>{3, 2, 1, 6, 5, 4}));
   // The same through a MetaImage TransformMatrix with -1 on the diagonal.
-  const VolumeImage meta = read(write(
-      "flip.mha", "NDims = 3\nDimSize = 3 2 1\nElementSpacing = 2 1 0.5\nOffset = 10 0 0\n"
-                  "TransformMatrix = -1 0 0 0 1 0 0 0 1\nElementType = MET_UCHAR\n"
-                  "ElementDataFile = LOCAL\n" + pack<std::uint8_t>(values, false)));
+  const VolumeImage meta =
+      read(write("flip.mha",
+                 "NDims = 3\nDimSize = 3 2 1\nElementSpacing = 2 1 0.5\nOffset = 10 0 0\n"
+                 "TransformMatrix = -1 0 0 0 1 0 0 0 1\nElementType = MET_UCHAR\n"
+                 "ElementDataFile = LOCAL\n" +
+                     pack<std::uint8_t>(values, false)));
   EXPECT_EQ(meta.origin, image.origin);
   EXPECT_EQ(meta.values, image.values);
   // The box the voxels cover.
@@ -254,9 +267,11 @@ TEST_F(VolumeImageTest, NegativeDirectionsAreFlippedInPlace) {
 }
 
 TEST_F(VolumeImageTest, TwoDimensionalImageIsOneSlice) {
-  const VolumeImage image = read(write(
-      "slice.mha", "NDims = 2\nDimSize = 2 3\nElementSpacing = 1 3\nElementType = MET_UCHAR\n"
-                   "ElementDataFile = LOCAL\n" + std::string("\1\2\3\4\5\6")));
+  const VolumeImage image =
+      read(write("slice.mha",
+                 "NDims = 2\nDimSize = 2 3\nElementSpacing = 1 3\nElementType = MET_UCHAR\n"
+                 "ElementDataFile = LOCAL\n" +
+                     std::string("\1\2\3\4\5\6")));
   EXPECT_EQ(image.size, (std::array<int, 3>{2, 3, 1}));
   EXPECT_EQ(image.at(1, 2, 0), 6);
   EXPECT_EQ(image.spacing, Vec3d(1, 3, 2));  // the slice is as thick as the mean spacing
@@ -284,25 +299,30 @@ TEST_F(VolumeImageTest, MetaImageHeaderErrorsNameFileLineAndField) {
   write("short.raw", "1234567");
   readError(write("short.mhd", good + "ElementDataFile = short.raw\n"),
             {"short.mhd", "ElementDataFile", "holds 7 bytes", "expected 8"});
-  readError(write("type.mhd", "NDims = 3\nDimSize = 2 2 2\nElementType = MET_FLOAT16\n"
-                              "ElementDataFile = LOCAL\n"),
+  readError(write("type.mhd",
+                  "NDims = 3\nDimSize = 2 2 2\nElementType = MET_FLOAT16\n"
+                  "ElementDataFile = LOCAL\n"),
             {"type.mhd", "line 3", "ElementType", "MET_FLOAT16"});
-  readError(write("dims.mhd", "NDims = 4\nDimSize = 2 2 2 2\nElementType = MET_UCHAR\n"
-                              "ElementDataFile = LOCAL\n"),
+  readError(write("dims.mhd",
+                  "NDims = 4\nDimSize = 2 2 2 2\nElementType = MET_UCHAR\n"
+                  "ElementDataFile = LOCAL\n"),
             {"dims.mhd", "line 1", "NDims"});
   readError(write("rgb.mhd", good + "ElementNumberOfChannels = 3\nElementDataFile = LOCAL\n"),
             {"rgb.mhd", "line 4", "ElementNumberOfChannels", "single-channel"});
-  readError(write("empty.mhd", "NDims = 3\nDimSize = 2 0 2\nElementType = MET_UCHAR\n"
-                               "ElementDataFile = LOCAL\n"),
+  readError(write("empty.mhd",
+                  "NDims = 3\nDimSize = 2 0 2\nElementType = MET_UCHAR\n"
+                  "ElementDataFile = LOCAL\n"),
             {"empty.mhd", "line 2", "DimSize", "empty image (zero voxels)"});
-  readError(write("sizes.mhd", "NDims = 3\nDimSize = 2 2\nElementType = MET_UCHAR\n"
-                               "ElementDataFile = LOCAL\n"),
+  readError(write("sizes.mhd",
+                  "NDims = 3\nDimSize = 2 2\nElementType = MET_UCHAR\n"
+                  "ElementDataFile = LOCAL\n"),
             {"sizes.mhd", "line 2", "DimSize", "expected NDims = 3 sizes, got 2"});
   readError(write("rotated.mha", good + "TransformMatrix = 0 1 0 1 0 0 0 0 1\n"
                                         "ElementDataFile = LOCAL\n12345678"),
             {"rotated.mha", "line 4", "TransformMatrix", "axis-aligned"});
-  readError(write("huge.mhd", "NDims = 3\nDimSize = 2000000000 2000000000 2000000000\n"
-                              "ElementType = MET_UCHAR\nElementDataFile = LOCAL\n"),
+  readError(write("huge.mhd",
+                  "NDims = 3\nDimSize = 2000000000 2000000000 2000000000\n"
+                  "ElementType = MET_UCHAR\nElementDataFile = LOCAL\n"),
             {"huge.mhd", "line 2", "DimSize", "beyond what can be read"});
   readError(write("noend.mhd", good), {"noend.mhd", "ElementDataFile", "missing"});
   readError(write("notmeta.mhd", "hello\n"), {"notmeta.mhd", "line 1", "Key = Value"});
@@ -322,8 +342,9 @@ TEST_F(VolumeImageTest, NrrdHeaderErrorsNameFileLineAndField) {
             {"dim.nrrd", "line 3", "dimension"});
   readError(write("vector.nrrd", "NRRD0004\ntype: uchar\ndimension: 4\nsizes: 3 2 2 2\n\n"),
             {"vector.nrrd", "line 3", "dimension", "multi-channel"});
-  readError(write("rgb.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 3 2 2\n"
-                             "kinds: RGB-color domain domain\n\n"),
+  readError(write("rgb.nrrd",
+                  "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 3 2 2\n"
+                  "kinds: RGB-color domain domain\n\n"),
             {"rgb.nrrd", "line 5", "kinds", "multi-channel"});
   readError(write("empty.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 0\n\n"),
             {"empty.nrrd", "line 4", "sizes", "empty image (zero voxels)"});
@@ -331,19 +352,23 @@ TEST_F(VolumeImageTest, NrrdHeaderErrorsNameFileLineAndField) {
             {"endian.nrrd", "endian", "missing"});
   readError(write("bzip.nrrd", head + "endian: little\nencoding: bzip2\n\nxx"),
             {"bzip.nrrd", "line 6", "encoding", "bzip2"});
-  readError(write("oblique.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\n"
-                                  "space directions: (1,1,0) (0,1,0) (0,0,1)\n\n12345678"),
+  readError(write("oblique.nrrd",
+                  "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\n"
+                  "space directions: (1,1,0) (0,1,0) (0,0,1)\n\n12345678"),
             {"oblique.nrrd", "line 5", "space directions", "axis-aligned"});
-  readError(write("huge.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\n"
-                              "sizes: 100000 100000 100000\nencoding: raw\n\n1234"),
+  readError(write("huge.nrrd",
+                  "NRRD0004\ntype: uchar\ndimension: 3\n"
+                  "sizes: 100000 100000 100000\nencoding: raw\n\n1234"),
             {"huge.nrrd", "line 4", "sizes", "beyond what can be read"});
   // A header announcing more voxels than the file holds: the size check, no allocation.
-  readError(write("big.nrrd", "NRRD0004\ntype: double\ndimension: 3\nsizes: 10000 10000 100\n"
-                             "endian: little\nencoding: raw\n\n1234"),
+  readError(write("big.nrrd",
+                  "NRRD0004\ntype: double\ndimension: 3\nsizes: 10000 10000 100\n"
+                  "endian: little\nencoding: raw\n\n1234"),
             {"big.nrrd", "holds 4 bytes", "expected 80000000000"});
   readError(write("magic.nrrd", "NRRX0004\n"), {"magic.nrrd", "line 1", "NRRD000"});
-  readError(write("text.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\n"
-                               "encoding: ascii\n\n1 2 3"),
+  readError(write("text.nrrd",
+                  "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 2\n"
+                  "encoding: ascii\n\n1 2 3"),
             {"text.nrrd", "expected 8 values", "found 3"});
   readError(write("image.png", ""), {"image.png", "extension"});
 }

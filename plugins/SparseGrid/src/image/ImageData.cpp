@@ -22,15 +22,19 @@ namespace stroma::image::detail {
 std::size_t sampleBytes(SampleType type) {
   switch (type) {
     case SampleType::int8:
-    case SampleType::uint8: return 1;
+    case SampleType::uint8:
+      return 1;
     case SampleType::int16:
-    case SampleType::uint16: return 2;
+    case SampleType::uint16:
+      return 2;
     case SampleType::int32:
     case SampleType::uint32:
-    case SampleType::float32: return 4;
+    case SampleType::float32:
+      return 4;
     case SampleType::int64:
     case SampleType::uint64:
-    case SampleType::float64: return 8;
+    case SampleType::float64:
+      return 8;
   }
   return 1;
 }
@@ -76,8 +80,8 @@ bool parseNumbers(std::string_view text, int count, std::vector<double>& numbers
     pos = end;
   }
   if (count >= 0 && int(numbers.size()) != count) {
-    why = "expected " + std::to_string(count) + " numbers, got " +
-          std::to_string(numbers.size()) + " ('" + std::string(text) + "')";
+    why = "expected " + std::to_string(count) + " numbers, got " + std::to_string(numbers.size()) +
+          " ('" + std::string(text) + "')";
     return false;
   }
   return true;
@@ -140,16 +144,36 @@ void decodeBinary(SampleType type, bool bigEndian, const char* data, std::size_t
                   std::vector<double>& values) {
   const bool swap = bigEndian != (std::endian::native == std::endian::big);
   switch (type) {
-    case SampleType::int8: decodeAs<std::int8_t>(swap, data, count, values); break;
-    case SampleType::uint8: decodeAs<std::uint8_t>(swap, data, count, values); break;
-    case SampleType::int16: decodeAs<std::int16_t>(swap, data, count, values); break;
-    case SampleType::uint16: decodeAs<std::uint16_t>(swap, data, count, values); break;
-    case SampleType::int32: decodeAs<std::int32_t>(swap, data, count, values); break;
-    case SampleType::uint32: decodeAs<std::uint32_t>(swap, data, count, values); break;
-    case SampleType::int64: decodeAs<std::int64_t>(swap, data, count, values); break;
-    case SampleType::uint64: decodeAs<std::uint64_t>(swap, data, count, values); break;
-    case SampleType::float32: decodeAs<float>(swap, data, count, values); break;
-    case SampleType::float64: decodeAs<double>(swap, data, count, values); break;
+    case SampleType::int8:
+      decodeAs<std::int8_t>(swap, data, count, values);
+      break;
+    case SampleType::uint8:
+      decodeAs<std::uint8_t>(swap, data, count, values);
+      break;
+    case SampleType::int16:
+      decodeAs<std::int16_t>(swap, data, count, values);
+      break;
+    case SampleType::uint16:
+      decodeAs<std::uint16_t>(swap, data, count, values);
+      break;
+    case SampleType::int32:
+      decodeAs<std::int32_t>(swap, data, count, values);
+      break;
+    case SampleType::uint32:
+      decodeAs<std::uint32_t>(swap, data, count, values);
+      break;
+    case SampleType::int64:
+      decodeAs<std::int64_t>(swap, data, count, values);
+      break;
+    case SampleType::uint64:
+      decodeAs<std::uint64_t>(swap, data, count, values);
+      break;
+    case SampleType::float32:
+      decodeAs<float>(swap, data, count, values);
+      break;
+    case SampleType::float64:
+      decodeAs<double>(swap, data, count, values);
+      break;
   }
 }
 
@@ -203,14 +227,15 @@ bool inflateBytes(std::string_view compressed, std::size_t maxBytes, std::string
   (void)compressed;
   (void)maxBytes;
   out.clear();
-  why = "compressed data needs zlib, which this build of Stroma was made without (install "
-        "zlib1g-dev and rebuild)";
+  why =
+      "compressed data needs zlib, which this build of Stroma was made without (install "
+      "zlib1g-dev and rebuild)";
   return false;
 #endif
 }
 
-bool placeAxes(const std::array<Vec3d, 3>& directions, const Vec3d& firstVoxel,
-               VolumeImage& image, std::string& why) {
+bool placeAxes(const std::array<Vec3d, 3>& directions, const Vec3d& firstVoxel, VolumeImage& image,
+               std::string& why) {
   static constexpr std::array<char, 3> axisName{'x', 'y', 'z'};
   Vec3d origin = firstVoxel;
   for (int a = 0; a < 3; ++a) {

@@ -14,7 +14,18 @@
 
 namespace stroma::image::detail {
 
-enum class SampleType { int8, uint8, int16, uint16, int32, uint32, int64, uint64, float32, float64 };
+enum class SampleType {
+  int8,
+  uint8,
+  int16,
+  uint16,
+  int32,
+  uint32,
+  int64,
+  uint64,
+  float32,
+  float64
+};
 
 std::size_t sampleBytes(SampleType type);
 std::string_view sampleTypeName(SampleType type);
@@ -28,8 +39,7 @@ struct HeaderLine {
 
 /// Splits `text` on whitespace and commas into numbers; false (with `why`) on a token that is
 /// not a number or a count other than `count` (when count >= 0).
-bool parseNumbers(std::string_view text, int count, std::vector<double>& numbers,
-                  std::string& why);
+bool parseNumbers(std::string_view text, int count, std::vector<double>& numbers, std::string& why);
 /// True for "true"/"1" and false for "false"/"0" (case-insensitive); false on anything else.
 bool parseBoolean(std::string_view text, bool& value);
 std::string lowercase(std::string_view text);
@@ -61,8 +71,8 @@ constexpr double kMaxVoxels = 1099511627776.0;
 /// axis' unit direction) and the centre of the first voxel, flipping axes given with a negative
 /// direction. False with `why` when a direction is not along its own axis (x, y, z in order) or
 /// is zero. The values must be read already.
-bool placeAxes(const std::array<Vec3d, 3>& directions, const Vec3d& firstVoxel,
-               VolumeImage& image, std::string& why);
+bool placeAxes(const std::array<Vec3d, 3>& directions, const Vec3d& firstVoxel, VolumeImage& image,
+               std::string& why);
 
 /// The readers of each format (path already known to have their extension).
 bool readMetaImage(const std::string& path, VolumeImage& image, std::string& error);

@@ -39,7 +39,7 @@ struct MetaHeader {
   long long headerSize = 0;
   std::string dataFile;
   int dataFileLine = 0;
-  std::size_t dataOffset = 0;  // where LOCAL data starts in the header file
+  std::size_t dataOffset = 0;         // where LOCAL data starts in the header file
   std::map<std::string, int> lineOf;  // line of each key read
   /// The line of `key` (of ElementDataFile, the last one, when `key` is absent).
   int line(const std::string& key) const {
@@ -88,7 +88,8 @@ bool readMetaImage(const std::string& path, VolumeImage& image, std::string& err
     } else if (key == "NDims") {
       std::vector<double> v;
       if (!parseNumbers(value, 1, v, why) || (v[0] != 2 && v[0] != 3))
-        return fail(line, key, "'" + value + "': only 3D images (or 2D, read as one slice) are read");
+        return fail(line, key,
+                    "'" + value + "': only 3D images (or 2D, read as one slice) are read");
       h.ndims = int(v[0]);
     } else if (key == "DimSize") {
       if (!parseNumbers(value, -1, h.dimSize, why)) return fail(line, key, why);
@@ -124,8 +125,7 @@ bool readMetaImage(const std::string& path, VolumeImage& image, std::string& err
     } else if (key == "ElementNumberOfChannels") {
       std::vector<double> v;
       if (!parseNumbers(value, 1, v, why) || v[0] != 1)
-        return fail(line, key,
-                    "'" + value + "': only single-channel (scalar) images are read");
+        return fail(line, key, "'" + value + "': only single-channel (scalar) images are read");
     } else if (key == "ElementDataFile") {
       if (value.empty()) return fail(line, key, "empty: expected a file name or LOCAL");
       h.dataFile = value;
@@ -171,8 +171,7 @@ bool readMetaImage(const std::string& path, VolumeImage& image, std::string& err
   image = VolumeImage{};
   image.size = {int(h.dimSize[0]), int(h.dimSize[1]), nd == 3 ? int(h.dimSize[2]) : 1};
   const std::size_t count = image.voxelCount();
-  if (count == 0)
-    return fail(h.line("DimSize"), "DimSize", "empty image (zero voxels)");
+  if (count == 0) return fail(h.line("DimSize"), "DimSize", "empty image (zero voxels)");
 
   // 3. The data bytes.
   std::string external;
@@ -183,8 +182,9 @@ bool readMetaImage(const std::string& path, VolumeImage& image, std::string& err
   } else {
     if (lowercase(h.dataFile) == "list" || h.dataFile.find('%') != std::string::npos ||
         h.dataFile.find(' ') != std::string::npos)
-      return fail(h.dataFileLine, "ElementDataFile",
-                  "'" + h.dataFile + "': only one data file (or LOCAL) is read, not a list of slices");
+      return fail(
+          h.dataFileLine, "ElementDataFile",
+          "'" + h.dataFile + "': only one data file (or LOCAL) is read, not a list of slices");
     dataName = siblingPath(path, h.dataFile);
     std::string why;
     if (!readFileBytes(dataName, external, why))

@@ -17,26 +17,46 @@ namespace {
 std::optional<SampleType> nrrdType(const std::string& spelled) {
   // The type names of the NRRD format, normalised to lower case with single spaces.
   static const std::map<std::string, SampleType> names{
-      {"signed char", SampleType::int8},       {"int8", SampleType::int8},
-      {"int8_t", SampleType::int8},            {"uchar", SampleType::uint8},
-      {"unsigned char", SampleType::uint8},    {"uint8", SampleType::uint8},
-      {"uint8_t", SampleType::uint8},          {"short", SampleType::int16},
-      {"short int", SampleType::int16},        {"signed short", SampleType::int16},
-      {"signed short int", SampleType::int16}, {"int16", SampleType::int16},
-      {"int16_t", SampleType::int16},          {"ushort", SampleType::uint16},
-      {"unsigned short", SampleType::uint16},  {"unsigned short int", SampleType::uint16},
-      {"uint16", SampleType::uint16},          {"uint16_t", SampleType::uint16},
-      {"int", SampleType::int32},              {"signed int", SampleType::int32},
-      {"int32", SampleType::int32},            {"int32_t", SampleType::int32},
-      {"uint", SampleType::uint32},            {"unsigned int", SampleType::uint32},
-      {"uint32", SampleType::uint32},          {"uint32_t", SampleType::uint32},
-      {"longlong", SampleType::int64},         {"long long", SampleType::int64},
-      {"long long int", SampleType::int64},    {"signed long long", SampleType::int64},
-      {"signed long long int", SampleType::int64}, {"int64", SampleType::int64},
-      {"int64_t", SampleType::int64},          {"ulonglong", SampleType::uint64},
-      {"unsigned long long", SampleType::uint64}, {"unsigned long long int", SampleType::uint64},
-      {"uint64", SampleType::uint64},          {"uint64_t", SampleType::uint64},
-      {"float", SampleType::float32},          {"double", SampleType::float64}};
+      {"signed char", SampleType::int8},
+      {"int8", SampleType::int8},
+      {"int8_t", SampleType::int8},
+      {"uchar", SampleType::uint8},
+      {"unsigned char", SampleType::uint8},
+      {"uint8", SampleType::uint8},
+      {"uint8_t", SampleType::uint8},
+      {"short", SampleType::int16},
+      {"short int", SampleType::int16},
+      {"signed short", SampleType::int16},
+      {"signed short int", SampleType::int16},
+      {"int16", SampleType::int16},
+      {"int16_t", SampleType::int16},
+      {"ushort", SampleType::uint16},
+      {"unsigned short", SampleType::uint16},
+      {"unsigned short int", SampleType::uint16},
+      {"uint16", SampleType::uint16},
+      {"uint16_t", SampleType::uint16},
+      {"int", SampleType::int32},
+      {"signed int", SampleType::int32},
+      {"int32", SampleType::int32},
+      {"int32_t", SampleType::int32},
+      {"uint", SampleType::uint32},
+      {"unsigned int", SampleType::uint32},
+      {"uint32", SampleType::uint32},
+      {"uint32_t", SampleType::uint32},
+      {"longlong", SampleType::int64},
+      {"long long", SampleType::int64},
+      {"long long int", SampleType::int64},
+      {"signed long long", SampleType::int64},
+      {"signed long long int", SampleType::int64},
+      {"int64", SampleType::int64},
+      {"int64_t", SampleType::int64},
+      {"ulonglong", SampleType::uint64},
+      {"unsigned long long", SampleType::uint64},
+      {"unsigned long long int", SampleType::uint64},
+      {"uint64", SampleType::uint64},
+      {"uint64_t", SampleType::uint64},
+      {"float", SampleType::float32},
+      {"double", SampleType::float64}};
   std::string words;
   for (char c : lowercase(spelled)) {
     if (c == ' ' || c == '\t') {
@@ -104,8 +124,8 @@ bool readNrrd(const std::string& path, VolumeImage& image, std::string& error) {
   if (!readFileBytes(path, text, error)) return false;
   NrrdHeader h;
   const auto fail = [&](int line, std::string_view field, const std::string& why) {
-    error = "NRRD '" + path + "', line " + std::to_string(line) + ": " + std::string(field) +
-            ": " + why;
+    error = "NRRD '" + path + "', line " + std::to_string(line) + ": " + std::string(field) + ": " +
+            why;
     return false;
   };
   const auto failField = [&](const std::string& field, const std::string& why) {
@@ -216,24 +236,24 @@ bool readNrrd(const std::string& path, VolumeImage& image, std::string& error) {
   if (!h.type) return failField("type", "missing");
   const auto nd = std::size_t(h.dimension);
   if (h.sizes.size() != nd)
-    return failField("sizes", h.sizes.empty() ? "missing"
-                                              : "expected dimension = " + std::to_string(nd) +
-                                                    " sizes, got " +
-                                                    std::to_string(h.sizes.size()));
+    return failField("sizes", h.sizes.empty()
+                                  ? "missing"
+                                  : "expected dimension = " + std::to_string(nd) + " sizes, got " +
+                                        std::to_string(h.sizes.size()));
   for (double s : h.sizes)
     if (s < 0 || s != std::floor(s) || s > std::numeric_limits<int>::max())
       return failField("sizes", "sizes must be whole numbers >= 0");
   if (!h.spacings.empty() && h.spacings.size() != nd)
-    return failField("spacings", "expected dimension = " + std::to_string(nd) +
-                                     " spacings, got " + std::to_string(h.spacings.size()));
+    return failField("spacings", "expected dimension = " + std::to_string(nd) + " spacings, got " +
+                                     std::to_string(h.spacings.size()));
   if (!h.directions.empty() && h.directions.size() != nd)
     return failField("space directions", "expected dimension = " + std::to_string(nd) +
                                              " vectors, got " +
                                              std::to_string(h.directions.size()));
   const double voxels = h.sizes[0] * h.sizes[1] * (nd == 3 ? h.sizes[2] : 1.0);
   if (voxels > kMaxVoxels)
-    return failField("sizes",
-                     "an image of " + std::to_string(voxels) + " voxels is beyond what can be read");
+    return failField(
+        "sizes", "an image of " + std::to_string(voxels) + " voxels is beyond what can be read");
   image = VolumeImage{};
   image.size = {int(h.sizes[0]), int(h.sizes[1]), nd == 3 ? int(h.sizes[2]) : 1};
   const std::size_t count = image.voxelCount();
@@ -241,11 +261,11 @@ bool readNrrd(const std::string& path, VolumeImage& image, std::string& error) {
   const bool text_ = h.encoding == "ascii" || h.encoding == "text" || h.encoding == "txt";
   const bool gzip = h.encoding == "gzip" || h.encoding == "gz";
   if (!text_ && !gzip && h.encoding != "raw")
-    return failField("encoding", "'" + h.encoding +
-                                     "' is not read (raw, ascii/text/txt and gzip/gz are)");
+    return failField("encoding",
+                     "'" + h.encoding + "' is not read (raw, ascii/text/txt and gzip/gz are)");
   if (!text_ && sampleBytes(*h.type) > 1 && !h.bigEndian)
-    return failField("endian", "missing: required for " +
-                                   std::string(sampleTypeName(*h.type)) + " samples");
+    return failField("endian",
+                     "missing: required for " + std::string(sampleTypeName(*h.type)) + " samples");
 
   // 3. The data bytes: lines skipped in the file, then decompressed, then bytes skipped.
   std::string external;
@@ -253,14 +273,15 @@ bool readNrrd(const std::string& path, VolumeImage& image, std::string& error) {
   std::string dataName = path;
   if (h.dataFile.empty()) {
     if (h.dataOffset >= text.size() && h.lineOf.count("data file") == 0)
-      return fail(line, "data", "no data after the header (a .nrrd needs a blank line then the "
-                                "data; a .nhdr needs 'data file:')");
+      return fail(line, "data",
+                  "no data after the header (a .nrrd needs a blank line then the "
+                  "data; a .nhdr needs 'data file:')");
     data = std::string_view(text).substr(h.dataOffset);
   } else {
     if (h.dataFile.rfind("LIST", 0) == 0 || h.dataFile.find('%') != std::string::npos ||
         h.dataFile.find(' ') != std::string::npos)
-      return failField("data file", "'" + h.dataFile +
-                                        "': only one data file is read, not a list of slices");
+      return failField("data file",
+                       "'" + h.dataFile + "': only one data file is read, not a list of slices");
     dataName = siblingPath(path, h.dataFile);
     std::string why;
     if (!readFileBytes(dataName, external, why)) return failField("data file", why);
@@ -275,7 +296,8 @@ bool readNrrd(const std::string& path, VolumeImage& image, std::string& error) {
   std::string inflated;
   if (gzip) {
     std::string why;
-    const std::size_t needed = count * sampleBytes(*h.type) + std::size_t(std::max(0LL, h.byteSkip));
+    const std::size_t needed =
+        count * sampleBytes(*h.type) + std::size_t(std::max(0LL, h.byteSkip));
     if (!inflateBytes(data, needed, inflated, why))
       return failField("encoding", "'" + dataName + "': " + why);
     data = inflated;
