@@ -12,13 +12,18 @@ void MultigridCycle::setOperators(const SparseMatrix& A0, const std::vector<Spar
   for (const SparseMatrix& p : P) m_P.push_back(&p);
   m_coarse.resize(P.size());
   m_work.resize(P.size() + 1);
+  // P^T once per pattern (the Galerkin products and the restrictions use it).
+  if (patternChanged || m_PT.size() != P.size()) {
+    m_PT.resize(P.size());
+    for (std::size_t l = 0; l < P.size(); ++l) m_PT[l] = P[l].transpose();
+    m_directAnalyzed = false;
+  }
   // Galerkin operators, finest to coarsest.
   for (std::size_t l = 0; l < P.size(); ++l) {
     const SparseMatrix& fine = l == 0 ? A0 : m_coarse[l - 1];
-    const SparseMatrix AP = fine * P[l];
-    m_coarse[l] = SparseMatrix(P[l].transpose()) * AP;
+    m_AP = fine * P[l];
+    m_coarse[l] = m_PT[l] * m_AP;
   }
-  if (patternChanged) m_directAnalyzed = false;
 }
 
 int MultigridCycle::conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b,
@@ -86,7 +91,7 @@ void MultigridCycle::vCycle(int level, Eigen::VectorXd& x, const Eigen::VectorXd
   conjugateGradient(A, b, x, settings.smoothingIterations, 0.0, w.r, w.p, w.q);
   // 2. restriction of the residual
   w.residual.noalias() = b - A * x;
-  w.coarseRhs.noalias() = P.transpose() * w.residual;
+  w.coarseRhs.noalias() = m_PT[level] * w.residual;
   // 3. coarse correction from zero
   w.coarseX.setZero(P.cols());
   vCycle(level + 1, w.coarseX, w.coarseRhs, settings);
@@ -101,8 +106,7 @@ void MultigridCycle::fullCycle(Eigen::VectorXd& x, const Eigen::VectorXd& b,
   const int coarsest = levels() - 1;
   m_fullRhs.resize(levels());
   m_fullRhs[0] = b;
-  for (int l = 0; l < coarsest; ++l)
-    m_fullRhs[l + 1].noalias() = m_P[l]->transpose() * m_fullRhs[l];
+  for (int l = 0; l < coarsest; ++l) m_fullRhs[l + 1].noalias() = m_PT[l] * m_fullRhs[l];
   Eigen::VectorXd current = Eigen::VectorXd::Zero(m_fullRhs[coarsest].size());
   solveCoarsest(current, m_fullRhs[coarsest], settings);
   for (int l = coarsest - 1; l >= 0; --l) {

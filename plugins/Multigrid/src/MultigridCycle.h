@@ -69,6 +69,8 @@ class MultigridCycle {
   };
   const SparseMatrix* m_A0 = nullptr;
   std::vector<const SparseMatrix*> m_P;
+  std::vector<SparseMatrix> m_PT;      ///< P_l^T, remade when the pattern changes
+  SparseMatrix m_AP;                   ///< scratch: A_l P_l
   std::vector<SparseMatrix> m_coarse;  ///< A_1 ... A_L
   std::vector<Work> m_work;            ///< per level
   std::vector<Eigen::VectorXd> m_fullRhs;
