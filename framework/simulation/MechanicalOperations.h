@@ -73,7 +73,9 @@ class MechanicalOperations {
   void projectVelocity(VecId v);
   /// Positions and velocities of the mapped states from the independent ones.
   void propagate(VecId x, VecId v);
-  /// Increments of the mapped states from those of the independent ones (dx -> J dx).
+  /// Increments of the mapped states from those of the independent ones (dx -> J dx), through
+  /// the mappings that lead to a force field or a mass only (computeForce and computeMBKdx
+  /// go back through those same ones).
   void propagateDx(VecId dx);
 
   /// Rows of the assembled system: the independent states' deriv numbers, in order.
@@ -93,6 +95,7 @@ class MechanicalOperations {
 
  private:
   void collect(Node& node, bool isSolverNode);
+  void collectLoadedMappings();
   void clearOnAll(VecId v);
   void fixedGlobalRows(std::vector<char>& fixed) const;
   Eigen::SparseMatrix<double> totalJacobian(const BaseMechanicalState* state);
@@ -106,6 +109,7 @@ class MechanicalOperations {
   std::vector<BaseMass*> m_masses;
   std::vector<BaseProjectiveConstraint*> m_constraints;
   std::vector<BaseMapping*> m_mappings;  // mechanical ones, top-down
+  std::vector<BaseMapping*> m_loadedMappings;  // those leading to a force field or mass
   std::vector<std::size_t> m_offsets;    // per independent state
   std::size_t m_systemSize = 0;
   std::vector<VecId> m_temporaries;
