@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "core/Message.h"
 
+#include <cstdio>
 #include <ostream>
 #include <sstream>
 
@@ -13,6 +14,12 @@ const char* levelName(MessageLevel level) {
     case MessageLevel::error: return "error";
   }
   return "unknown";
+}
+
+std::string formatNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
 }
 
 std::string formatForConsole(const Message& m) {

@@ -36,6 +36,10 @@ std::string formatForConsole(const Message& message);
 /// One JSON object on one line, with the keys level, text, component, class, field, file, line.
 std::string formatAsJson(const Message& message);
 
+/// A number as messages quote it: printf's "%g" (6 significant digits), so that "got 1e+40"
+/// or "got -5" reads as the user wrote it.
+std::string formatNumber(double value);
+
 /// Receives messages as they are logged (console, JSON-lines file, test collector).
 class MessageSink {
  public:

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
-#include <cstdio>
 
 #include "core/Node.h"
 
@@ -30,12 +29,6 @@ std::vector<double> parseNumbers(const std::string& text) {
 }
 
 }  // namespace
-
-std::string formatNumber(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
-}
 
 std::string describeElements(const std::vector<std::size_t>& indices) {
   constexpr std::size_t kShown = 10;

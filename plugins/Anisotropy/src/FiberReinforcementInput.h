@@ -16,9 +16,6 @@
 
 namespace stroma::reinforcement {
 
-/// "%.6g" of a value, for messages.
-std::string formatNumber(double value);
-
 /// "3, 17, 42" or "3, 17, 42, ... (12 in all)": element indices for messages, the first 10.
 std::string describeElements(const std::vector<std::size_t>& indices);
 

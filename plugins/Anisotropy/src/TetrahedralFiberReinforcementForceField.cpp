@@ -19,7 +19,6 @@ using anisotropy::ConstantsStatus;
 using anisotropy::EngineeringConstants;
 using anisotropy::SpencerParameters;
 using reinforcement::describeElements;
-using reinforcement::formatNumber;
 using Vector12d = fem::ElementVector<4>;
 
 constexpr const char* kEngineeringNames =

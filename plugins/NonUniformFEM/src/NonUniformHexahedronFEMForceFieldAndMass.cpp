@@ -3,12 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "ImageMaterial.h"
 #include "SolidMechanics/kernels/CorotationalElement.h"
 #include "SolidMechanics/kernels/IsotropicMaterial.h"
 #include "TransferFunction.h"
+#include "core/Message.h"
 #include "core/Node.h"
 #include "core/ThreadPool.h"
 
@@ -23,12 +23,6 @@ constexpr std::size_t kCondensationGrain = 4;
 constexpr std::size_t kForceGrain = 128;
 constexpr std::size_t kProductGrain = 256;
 constexpr std::size_t kVertexGrain = 2048;
-
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
 
 }  // namespace
 
@@ -168,16 +162,16 @@ bool NonUniformHexahedronFEMForceFieldAndMass::computeCellMaterials(
 bool NonUniformHexahedronFEMForceFieldAndMass::computeConstants() {
   const double E = d_youngModulus.value(), nu = d_poissonRatio.value(), rho = d_density.value();
   if (!(E > 0) || !std::isfinite(E)) {
-    reportBadInput("expected a Young's modulus > 0, got " + number(E), "youngModulus");
+    reportBadInput("expected a Young's modulus > 0, got " + formatNumber(E), "youngModulus");
     return false;
   }
   if (!fem::isValidIsotropicMaterial(E, nu)) {
-    reportBadInput("expected -1 < poissonRatio < 0.5 (0.5 is incompressible), got " + number(nu),
+    reportBadInput("expected -1 < poissonRatio < 0.5 (0.5 is incompressible), got " + formatNumber(nu),
                    "poissonRatio");
     return false;
   }
   if (!(rho > 0) || !std::isfinite(rho)) {
-    reportBadInput("expected a density > 0, got " + number(rho), "density");
+    reportBadInput("expected a density > 0, got " + formatNumber(rho), "density");
     return false;
   }
   const auto available = m_topology->sparseGridFinerLevels();

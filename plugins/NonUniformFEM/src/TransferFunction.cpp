@@ -3,19 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+
+#include "core/Message.h"
 
 namespace stroma::nonuniform {
-
-namespace {
-
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
-}  // namespace
 
 std::optional<TransferFunction> TransferFunction::parse(std::span<const double> pairs,
                                                         double minimum, bool strict,
@@ -28,18 +19,18 @@ std::optional<TransferFunction> TransferFunction::parse(std::span<const double> 
   for (std::size_t k = 0; k < pairs.size(); k += 2) {
     const double v = pairs[k], y = pairs[k + 1];
     if (!std::isfinite(v) || !std::isfinite(y)) {
-      why = "expected finite numbers, got " + number(v) + " " + number(y);
+      why = "expected finite numbers, got " + formatNumber(v) + " " + formatNumber(y);
       return std::nullopt;
     }
     if (!f.m_inputs.empty() && !(v > f.m_inputs.back())) {
-      why = "expected strictly increasing image values, got " + number(v) + " after " +
-            number(f.m_inputs.back());
+      why = "expected strictly increasing image values, got " + formatNumber(v) + " after " +
+            formatNumber(f.m_inputs.back());
       return std::nullopt;
     }
     // Linear pieces between valid points stay valid: checking the points is enough.
     if (y < minimum || (strict && y == minimum)) {
-      why = "gives " + number(y) + " at image value " + number(v) + ", expected a value " +
-            (strict ? "> " : ">= ") + number(minimum);
+      why = "gives " + formatNumber(y) + " at image value " + formatNumber(v) + ", expected a value " +
+            (strict ? "> " : ">= ") + formatNumber(minimum);
       return std::nullopt;
     }
     f.m_inputs.push_back(v);

@@ -2,7 +2,6 @@
 #include "StaticSolver.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "StepChecks.h"
 #include "core/Node.h"
@@ -24,12 +23,6 @@ double residual(MechanicalOperations& mop, double dt, VecId r) {
 
 // |R| / |R_0| below which the residual is round-off: the line search then cannot fail.
 constexpr double kRoundoff = 1e-12;
-
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
-}
 
 }  // namespace
 
@@ -114,7 +107,7 @@ void StaticSolver::solve(MechanicalOperations& mop, double dt) {
         msgWarning("the line search failed at step " + std::to_string(m_step) +
                        ", Newton iteration " + std::to_string(iteration) +
                        ": no step along the Newton direction reduces the residual |R| = " +
-                       number(normR) + " N (smallest step tried: " + number(alpha) + "); " +
+                       formatNumber(normR) + " N (smallest step tried: " + formatNumber(alpha) + "); " +
                        (set.fullStepWhenLineSearchFails ? "the full step is taken"
                                                         : "the solver stays at the last point") +
                        ". The matrix may not be the derivative of the forces, or the load is "
@@ -143,8 +136,8 @@ void StaticSolver::solve(MechanicalOperations& mop, double dt) {
     const double displacement = mop.norm(total);
     if (log)
       msgInfo("step " + std::to_string(m_step) + ", Newton iteration " + std::to_string(iteration) +
-              ": |R| = " + number(normR) + " N, |du| = " + number(correction) +
-              " m, alpha = " + number(alpha));
+              ": |R| = " + formatNumber(normR) + " N, |du| = " + formatNumber(correction) +
+              " m, alpha = " + formatNumber(alpha));
 
     // Convergence criteria, in the order of SOFA's NewtonRaphsonSolver.
     const char* criterion = nullptr;
@@ -177,12 +170,12 @@ void StaticSolver::solve(MechanicalOperations& mop, double dt) {
   if (!converged) setStatus(lineSearchFailed ? "DivergedLineSearch" : "DivergedMaxIterations");
   if (log)
     msgInfo("step " + std::to_string(m_step) + ": " + (converged ? "converged" : "not converged") +
-            " after " + std::to_string(iteration) + " Newton iteration(s), |R| = " + number(normR) +
-            " N (|R_0| = " + number(normR0) + " N)");
+            " after " + std::to_string(iteration) + " Newton iteration(s), |R| = " + formatNumber(normR) +
+            " N (|R_0| = " + formatNumber(normR0) + " N)");
   if (!converged && !stalled && set.warnWhenNotConverged && m_unconverged++ == 0)
     msgWarning("Newton did not converge in " + std::to_string(iteration) + " iterations at step " +
-                   std::to_string(m_step) + ": |R| = " + number(normR) +
-                   " N, |R_0| = " + number(normR0) +
+                   std::to_string(m_step) + ": |R| = " + formatNumber(normR) +
+                   " N, |R_0| = " + formatNumber(normR0) +
                    " N (raise the iterations, or loosen the thresholds); later ones are "
                    "counted",
                l_newtonSolver ? "newtonSolver" : "newton_iterations");

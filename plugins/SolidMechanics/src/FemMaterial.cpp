@@ -2,21 +2,11 @@
 #include "FemMaterial.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "SolidMechanics/kernels/IsotropicMaterial.h"
+#include "core/Message.h"
 
 namespace stroma {
-
-namespace {
-
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
-}  // namespace
 
 std::optional<MaterialProblem> checkMaterial(std::span<const double> youngModulus,
                                              double poissonRatio, std::size_t elementCount,
@@ -30,13 +20,13 @@ std::optional<MaterialProblem> checkMaterial(std::span<const double> youngModulu
     if (!(youngModulus[i] > 0) || !std::isfinite(youngModulus[i]))
       return MaterialProblem{
           "youngModulus",
-          "expected values > 0, got " + number(youngModulus[i]) +
+          "expected values > 0, got " + formatNumber(youngModulus[i]) +
               (youngModulus.size() > 1 ? " for element " + std::to_string(i) : std::string())};
   if (!(poissonRatio > -1 && poissonRatio < 0.5))
     return MaterialProblem{"poissonRatio",
                            "expected -1 < poissonRatio < 0.5 (0.5 is incompressible: the "
                            "elasticity matrix would be infinite), got " +
-                               number(poissonRatio)};
+                               formatNumber(poissonRatio)};
   if (!fem::isValidIsotropicMaterial(youngModulus[0], poissonRatio))
     return MaterialProblem{"youngModulus", "the material is out of the valid range"};
   return std::nullopt;

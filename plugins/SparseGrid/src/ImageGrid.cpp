@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "SparseGrid.h"
+#include "core/Message.h"
 
 namespace stroma::sparsegrid {
 namespace {
@@ -66,12 +66,6 @@ AxisOverlaps overlapAxis(int voxels, double voxelLo, double voxelSize, int cells
   return o;
 }
 
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
 }  // namespace
 
 bool VoxelSelection::inside(double value) const {
@@ -85,11 +79,11 @@ std::string VoxelSelection::describe() const {
     std::string text = labels.size() == 1 ? "voxel with label " : "voxel with a label among ";
     for (std::size_t n = 0; n < labels.size(); ++n) {
       if (n > 0) text += ' ';
-      text += number(labels[n]);
+      text += formatNumber(labels[n]);
     }
     return text;
   }
-  if (threshold) return "voxel >= " + number(*threshold) + " (threshold)";
+  if (threshold) return "voxel >= " + formatNumber(*threshold) + " (threshold)";
   return "voxel > 0 (no threshold given)";
 }
 

@@ -2,21 +2,11 @@
 #include "TetrahedralMesh.h"
 
 #include <cmath>
-#include <cstdio>
 
+#include "core/Message.h"
 #include "core/Node.h"
 
 namespace stroma {
-
-namespace {
-
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
-}  // namespace
 
 bool TetrahedralMesh::read(Base& owner, const Link<Topology>& link, const State& state) {
   m_topology = findTetrahedralTopology(owner, link);
@@ -98,13 +88,13 @@ std::optional<fem::LameParameters> readIsotropicMaterial(Base& owner, double you
   std::string field, text;
   if (!(youngModulus > 0) || !std::isfinite(youngModulus)) {
     field = "youngModulus";
-    text = "expected a finite value > 0, got " + number(youngModulus);
+    text = "expected a finite value > 0, got " + formatNumber(youngModulus);
   } else if (!(poissonRatio > -1 && poissonRatio < 0.5)) {
     field = "poissonRatio";
     text =
         "expected -1 < poissonRatio < 0.5 (0.5 is incompressible: lambda would be "
         "infinite), got " +
-        number(poissonRatio);
+        formatNumber(poissonRatio);
   } else {
     return fem::computeLameParameters(youngModulus, poissonRatio);
   }
