@@ -140,6 +140,24 @@ void decodeAs(bool swap, const char* data, std::size_t count, std::vector<double
 
 }  // namespace
 
+bool decodeBinarySamples(std::string_view data, const std::string& dataName, SampleType type,
+                         bool bigEndian, long long skip, VolumeImage& image, std::string& why) {
+  const std::size_t count = image.voxelCount();
+  const std::size_t bytes = count * sampleBytes(type);
+  const std::size_t start = skip == -1 ? (data.size() >= bytes ? data.size() - bytes : 0)
+                                       : std::size_t(skip);
+  if (data.size() < start || data.size() - start < bytes) {
+    why = "size mismatch: '" + dataName + "' holds " +
+          std::to_string(data.size() > start ? data.size() - start : 0) +
+          " bytes of data, expected " + std::to_string(bytes) + " (" +
+          std::to_string(image.size[0]) + " x " + std::to_string(image.size[1]) + " x " +
+          std::to_string(image.size[2]) + " voxels of " + std::string(sampleTypeName(type)) + ")";
+    return false;
+  }
+  decodeBinary(type, bigEndian, data.data() + start, count, image.values);
+  return true;
+}
+
 void decodeBinary(SampleType type, bool bigEndian, const char* data, std::size_t count,
                   std::vector<double>& values) {
   const bool swap = bigEndian != (std::endian::native == std::endian::big);

@@ -54,6 +54,12 @@ std::string siblingPath(const std::string& headerPath, const std::string& name);
 /// differs from the machine's) into `values`.
 void decodeBinary(SampleType type, bool bigEndian, const char* data, std::size_t count,
                   std::vector<double>& values);
+/// Decodes the binary samples of `image.size` after skipping `skip` bytes of `data` (-1: the
+/// samples end the data, as MetaImage's HeaderSize and NRRD's byte skip say) into
+/// `image.values`; false with a "size mismatch" `why` (bytes found and expected, the voxel
+/// counts and type) when `data` is too short.
+bool decodeBinarySamples(std::string_view data, const std::string& dataName, SampleType type,
+                         bool bigEndian, long long skip, VolumeImage& image, std::string& why);
 /// Reads `count` numbers written as text (whitespace or commas between them).
 bool decodeText(std::string_view text, std::size_t count, std::vector<double>& values,
                 std::string& why);

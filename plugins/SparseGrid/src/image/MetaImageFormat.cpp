@@ -206,21 +206,9 @@ bool readMetaImage(const std::string& path, VolumeImage& image, std::string& err
     if (!decodeText(data, count, image.values, why))
       return fail(h.dataFileLine, "ElementDataFile", "'" + dataName + "': " + why);
   } else {
-    const std::size_t bytes = count * sampleBytes(*h.type);
-    std::size_t skip = 0;
-    if (h.headerSize == -1)
-      skip = data.size() >= bytes ? data.size() - bytes : 0;  // the data ends the file
-    else
-      skip = std::size_t(h.headerSize);
-    if (data.size() < skip || data.size() - skip < bytes)
-      return fail(h.dataFileLine, "ElementDataFile",
-                  "size mismatch: '" + dataName + "' holds " +
-                      std::to_string(data.size() > skip ? data.size() - skip : 0) +
-                      " bytes of data, expected " + std::to_string(bytes) + " (" +
-                      std::to_string(image.size[0]) + " x " + std::to_string(image.size[1]) +
-                      " x " + std::to_string(image.size[2]) + " voxels of " +
-                      std::string(sampleTypeName(*h.type)) + ")");
-    decodeBinary(*h.type, h.bigEndian, data.data() + skip, count, image.values);
+    std::string why;
+    if (!decodeBinarySamples(data, dataName, *h.type, h.bigEndian, h.headerSize, image, why))
+      return fail(h.dataFileLine, "ElementDataFile", why);
   }
 
   // 4. Place the axes: spacing times the direction cosines (the diagonal only).

@@ -308,21 +308,10 @@ bool readNrrd(const std::string& path, VolumeImage& image, std::string& error) {
       return fail(h.lineOf.count("encoding") ? h.lineOf["encoding"] : line, "data",
                   "'" + dataName + "': " + why);
   } else {
-    const std::size_t bytes = count * sampleBytes(*h.type);
-    std::size_t skip = 0;
-    if (h.byteSkip == -1)
-      skip = data.size() >= bytes ? data.size() - bytes : 0;  // the data ends the file
-    else
-      skip = std::size_t(h.byteSkip);
-    if (data.size() < skip || data.size() - skip < bytes)
-      return failField(h.dataFile.empty() ? "sizes" : "data file",
-                       "size mismatch: '" + dataName + "' holds " +
-                           std::to_string(data.size() > skip ? data.size() - skip : 0) +
-                           " bytes of data, expected " + std::to_string(bytes) + " (" +
-                           std::to_string(image.size[0]) + " x " + std::to_string(image.size[1]) +
-                           " x " + std::to_string(image.size[2]) + " voxels of " +
-                           std::string(sampleTypeName(*h.type)) + ")");
-    decodeBinary(*h.type, h.bigEndian.value_or(false), data.data() + skip, count, image.values);
+    std::string why;
+    if (!decodeBinarySamples(data, dataName, *h.type, h.bigEndian.value_or(false), h.byteSkip,
+                             image, why))
+      return failField(h.dataFile.empty() ? "sizes" : "data file", why);
   }
 
   // 4. Place the axes: space directions, else spacings, else unit spacing.
