@@ -45,7 +45,11 @@ class MechanicalOperations {
 
   const std::vector<BaseMechanicalState*>& independentStates() const { return m_independent; }
   const std::vector<BaseMass*>& masses() const { return m_masses; }
+  const std::vector<BaseProjectiveConstraint*>& constraints() const { return m_constraints; }
   bool hasState() const { return !m_independent.empty(); }
+  /// Per row of the assembled system, 1 when a projective constraint fixes it (the rows that
+  /// assemble() replaces by identity rows).
+  void fixedGlobalRows(std::vector<char>& fixed) const;
 
   /// Temporary vectors on every state (independent and mapped), zeroed. Freed with freeVec
   /// or when the operations end.
@@ -97,7 +101,6 @@ class MechanicalOperations {
   void collect(Node& node, bool isSolverNode);
   void collectLoadedMappings();
   void clearOnAll(VecId v);
-  void fixedGlobalRows(std::vector<char>& fixed) const;
   Eigen::SparseMatrix<double> totalJacobian(const BaseMechanicalState* state);
 
   Node& m_node;

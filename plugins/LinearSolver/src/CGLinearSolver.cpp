@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "DependentDofs.h"
-#include "core/Node.h"
+#include "simulation/ProjectiveConstraint.h"
 #include "simulation/MechanicalOperations.h"
 #include "simulation/Timing.h"
 
@@ -17,16 +17,16 @@ bool isAssembledTemplate(const std::string& name) {
   return name.rfind("CompressedRowSparseMatrix", 0) == 0;
 }
 
-// The DependentDofs hooks (T-nodes) of the subtree on the system's independent states.
-void collectDependentDofs(const Node& node, const MechanicalOperations& mop,
-                          std::vector<DependentDofs*>& found) {
-  for (const auto& object : node.objects())
-    if (auto* hook = dynamic_cast<DependentDofs*>(object.get())) {
-      const auto& states = mop.independentStates();
-      if (std::find(states.begin(), states.end(), hook->dependentState()) != states.end())
-        found.push_back(hook);
-    }
-  for (const auto& child : node.children()) collectDependentDofs(*child, mop, found);
+// The DependentDofs hooks (T-nodes): projective constraints of the system that also interpolate
+// some of its independent dofs from others.
+std::vector<DependentDofs*> dependentDofs(const MechanicalOperations& mop) {
+  std::vector<DependentDofs*> found;
+  const auto& states = mop.independentStates();
+  for (BaseProjectiveConstraint* c : mop.constraints())
+    if (auto* hook = dynamic_cast<DependentDofs*>(c);
+        hook && std::find(states.begin(), states.end(), hook->dependentState()) != states.end())
+      found.push_back(hook);
+  return found;
 }
 }  // namespace
 
@@ -55,8 +55,7 @@ LinearSolveReport CGLinearSolver::solve(MechanicalOperations& mop, const Mechani
 LinearSolveReport CGLinearSolver::solveMatrixFree(MechanicalOperations& mop,
                                                   const MechanicalParams& mp, VecId x, VecId rhs) {
   ScopedPhase phase(mop.timing(), "linearSolve");
-  std::vector<DependentDofs*> dependent;
-  collectDependentDofs(mop.node(), mop, dependent);
+  const std::vector<DependentDofs*> dependent = dependentDofs(mop);
   LinearSolveReport report;
   const VecId r = mop.allocDeriv(), p = mop.allocDeriv(), q = mop.allocDeriv();
   const double normB = mop.norm(rhs);

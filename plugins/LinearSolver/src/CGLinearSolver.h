@@ -13,8 +13,9 @@ namespace stroma {
 /// solve and iterates on it, optionally preconditioned by its diagonal (Jacobi). Stops when ||r||
 /// <= tolerance ||rhs||, after `iterations`, or when a denominator falls below `threshold`; a stop
 /// without convergence is reported (a warning the first time, and the count at the end of the run).
-/// The matrix-free template calls the DependentDofs hooks of its subtree (DependentDofs.h: the
-/// T-nodes of a multiresolution grid, seed 001 Algorithm 1) around each product.
+/// The matrix-free template calls the DependentDofs hooks of its system's projective
+/// constraints (DependentDofs.h: the T-nodes of a multiresolution grid, seed 001 Algorithm 1)
+/// around each product.
 class CGLinearSolver final : public LinearSolver {
  public:
   Data<int> d_iterations{this, "iterations", 25, "Maximum number of iterations.", {.min = 1.0}};

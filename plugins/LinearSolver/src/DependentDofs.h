@@ -9,8 +9,8 @@ class BaseMechanicalState;
 
 /// A hook of CGLinearSolver (matrix-free template) for degrees of freedom that are not unknowns
 /// but interpolations of others, such as the T-nodes of a multiresolution grid (seed 001,
-/// Algorithm 1, "multiresolution conjugate gradient"). A component implementing it in the
-/// solver's subtree, on one of the solver's independent states, is called by CG:
+/// Algorithm 1, "multiresolution conjugate gradient"). A projective constraint of the solver's
+/// system implementing it, on one of the system's independent states, is called by CG:
 ///
 ///   interpolateDependent(p)  before each product A p (PROPAGERDEPLACEMENTS: the direction at a
 ///                            dependent dof is the interpolation of its parents'),

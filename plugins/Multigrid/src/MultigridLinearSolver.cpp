@@ -84,17 +84,6 @@ bool MultigridLinearSolver::prepareGrids(MechanicalOperations& mop) {
   return true;
 }
 
-void MultigridLinearSolver::findFixed(MechanicalOperations& mop, std::vector<char>& fixed) {
-  const VecId ones = mop.allocDeriv();
-  mop.scatter(Eigen::VectorXd::Ones(Eigen::Index(mop.systemSize())), ones);
-  mop.projectResponse(ones);
-  Eigen::VectorXd projected;
-  mop.gather(ones, projected);
-  mop.freeVec(ones);
-  fixed.assign(std::size_t(projected.size()), 0);
-  for (Eigen::Index i = 0; i < projected.size(); ++i) fixed[std::size_t(i)] = projected[i] == 0;
-}
-
 LinearSolveReport MultigridLinearSolver::fail(MechanicalOperations& mop, VecId x) {
   mop.vOp(x, VecId::null(), VecId::null(), 0.0);
   LinearSolveReport r;
@@ -126,7 +115,7 @@ LinearSolveReport MultigridLinearSolver::solve(MechanicalOperations& mop,
   ScopedPhase phase(mop.timing(), "linearSolve");
   // Prolongations in the space the constraints allow, remade when the fixed set changes.
   std::vector<char> fixed;
-  findFixed(mop, fixed);
+  mop.fixedGlobalRows(fixed);
   const bool patternChanged = fixed != m_fixed || m_P.size() != m_pointP.size();
   if (patternChanged) {
     m_fixed = std::move(fixed);

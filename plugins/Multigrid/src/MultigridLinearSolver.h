@@ -38,7 +38,7 @@ struct EnumKeywords<MultigridCycleKind> {
 /// seed 001 ch. 4 sec. 3), smoother = CG (MultigridCycle.h).
 ///
 /// Constraints: A_0 is assembled with the fixed rows as identity (as SparseLDLSolver); the rows
-/// of P at fixed degrees of freedom (those projectResponse zeroes) are zeroed, so coarse
+/// of P at fixed degrees of freedom (MechanicalOperations::fixedGlobalRows) are zeroed, so coarse
 /// corrections never move a fixed point and the identity rows do not enter A_1.
 ///
 /// Each solve assembles A_0 and recomputes the Galerkin operators (the values change for a
@@ -107,8 +107,6 @@ class MultigridLinearSolver final : public LinearSolver {
   Topology* findTopology(MechanicalOperations* mop) const;
   /// Builds the grids and P when the topology changed; false (with an error) on bad input.
   bool prepareGrids(MechanicalOperations& mop);
-  /// The fixed degrees of freedom: those projectResponse zeroes.
-  void findFixed(MechanicalOperations& mop, std::vector<char>& fixed);
   LinearSolveReport fail(MechanicalOperations& mop, VecId x);
   /// z = one cycle on A z = r from z = 0.
   void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z,
