@@ -241,8 +241,9 @@ void checkHangingBeams(const std::unique_ptr<Scene>& scene, const std::string& n
   // The corotational methods agree with each other (the rotations differ only by the strain
   // in the element, small here) and differ from the linear one, which stretches in rotation.
   for (const std::string& beam : beams)
-    if (beam != "SMALL" && beam != "LARGE" && tip.count("LARGE"))
+    if (beam != "SMALL" && beam != "LARGE" && tip.count("LARGE")) {
       EXPECT_LT((tip[beam] - tip["LARGE"]).norm(), 0.05 * tip["LARGE"].norm()) << beam;
+    }
 }
 
 TEST_F(CoreScenes, FemBeamsHangFromTheirFixedEndsAndLoseEnergy) {
