@@ -10,6 +10,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libsuitesparse-dev   # CHOLMOD, for the optional Cholmod plugin
   zlib1g-dev   # gzip/zlib-compressed NRRD and MetaImage volume images (SparseGrid)
+  gnuplot-nox   # PNG plots of error against run time (framework/report/Chart)
+  libmetis-dev   # automatic mesh partitions of the hybrid model (DomainDecomposition)
   clang libclang-rt-14-dev   # libFuzzer and LeakSanitizer for the fuzz and leak tests
 )
 
