@@ -40,6 +40,7 @@ int checkCommand(const std::vector<std::string>& args);
 int listCommand(const std::vector<std::string>& args);
 int docCommand(const std::vector<std::string>& args);
 int pluginIndexCommand(const std::vector<std::string>& args);
+int benchCommand(const std::vector<std::string>& args);  ///< BenchCommand.cpp
 
 /// Prints "stroma: <text>" to stderr and returns kBadInput.
 int usageError(const std::string& text);

@@ -21,6 +21,13 @@ Usage:
                                     docs/state-format.md)
       --export-every K              ... and also every K steps (with step 0)
   stroma check SCENE [options]      load a scene and report every problem, without running it
+  stroma bench STUDY.xml [options]  run a study (scenes x models, resolutions, solvers, time
+                                    steps), write DIR/STUDY.csv and DIR/STUDY.png (error
+                                    against run time); format: bench/studies/README.md
+      --quick                       only the study's quick rows and steps
+      --output DIR                  where the CSV and the plot go (default bench-results)
+      --threads N                   threads per scene (default 1; 0: all cores)
+      --data-path DIR               as for run
   stroma list [--plugin NAME]       available components, by plugin
   stroma doc COMPONENT              every field of a component: type, default, unit, help
   stroma plugin-index LIB --output FILE
@@ -59,6 +66,7 @@ int main(int argc, char** argv) {
     }
     if (command == "run") return runCommand(rest);
     if (command == "check") return checkCommand(rest);
+    if (command == "bench") return benchCommand(rest);
     if (command == "list") return listCommand(rest);
     if (command == "doc") return docCommand(rest);
     if (command == "plugin-index") return pluginIndexCommand(rest);
@@ -69,7 +77,7 @@ int main(int argc, char** argv) {
   }
   std::string text = "unknown command '" + command + "'";
   const auto near = stroma::nearestNames(
-      command, {"run", "check", "list", "doc", "plugin-index", "--help", "--version"});
+      command, {"run", "check", "bench", "list", "doc", "plugin-index", "--help", "--version"});
   if (!near.empty()) text += "; did you mean " + stroma::quotedList(near) + "?";
   return usageError(text);
 }
