@@ -7,6 +7,7 @@
 
 #include "CommandLine.h"
 #include "core/Runtime.h"
+#include "simulation/RunSummary.h"
 #include "simulation/Scene.h"
 #include "simulation/StateFile.h"
 
@@ -52,6 +53,16 @@ void printTimingSummary(const Scene& scene, const Timing& timing, long long step
   for (const auto& p : timing.phases())
     std::printf("  %-24s %12.6f %10lld %14.4f\n", p.name.c_str(), p.seconds, p.calls,
                 p.calls ? 1e3 * p.seconds / static_cast<double>(p.calls) : 0.0);
+}
+
+/// The lines of every component implementing RunSummaryProvider (an error against a
+/// reference...), in graph order, each after its component's path.
+void printComponentSummaries(const Node& node) {
+  for (const auto& object : node.objects())
+    if (const auto* provider = dynamic_cast<const RunSummaryProvider*>(object.get()))
+      for (const std::string& line : provider->runSummaryLines())
+        std::printf("  %s: %s\n", object->path().c_str(), line.c_str());
+  for (const auto& child : node.children()) printComponentSummaries(*child);
 }
 
 }  // namespace
@@ -108,6 +119,7 @@ int runCommand(const std::vector<std::string>& args) {
     }
   }
   printTimingSummary(scene, scene.timing(), done, dt);
+  printComponentSummaries(scene.root());
   return code;
 }
 
