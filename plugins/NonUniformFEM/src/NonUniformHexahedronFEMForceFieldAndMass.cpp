@@ -108,7 +108,11 @@ bool NonUniformHexahedronFEMForceFieldAndMass::computeCellMaterials(
       levels.empty() ? *m_topology->sparseGrid() : levels.front().grid;
   const std::size_t count = finest.cells.size();
   m_cellMaterials.assign(count, fem::CellMaterial{1, d_youngModulus.value(), d_density.value()});
-  for (std::size_t c = 0; c < count; ++c) m_cellMaterials[c].fraction = finest.fractions[c];
+  // A kept cell holds material even where the sampling found none (the surface crosses it):
+  // flooring its fraction keeps every point of the grid with some mass and stiffness.
+  const double floor = d_minimumFraction.value();
+  for (std::size_t c = 0; c < count; ++c)
+    m_cellMaterials[c].fraction = std::max(finest.fractions[c], floor);
 
   const bool hasImage = !d_imageFile.value().original.empty();
   const bool hasTransfer =
@@ -242,17 +246,18 @@ bool NonUniformHexahedronFEMForceFieldAndMass::computeConstants() {
   for (double m : m_vertexMasses) total += m;
   d_vertexMass.setValue(m_vertexMasses);
   d_totalMass.setValue(total);
-  m_materialVersion = d_youngModulus.version() + d_poissonRatio.version() + d_density.version() +
-                      d_nbVirtualFinerLevels.version() + d_youngModulusTransfer.version() +
-                      d_densityTransfer.version() + d_imageFile.version();
+  m_materialVersion = materialVersion();
   return true;
 }
 
+std::uint64_t NonUniformHexahedronFEMForceFieldAndMass::materialVersion() const {
+  return d_youngModulus.version() + d_poissonRatio.version() + d_density.version() +
+         d_nbVirtualFinerLevels.version() + d_minimumFraction.version() +
+         d_youngModulusTransfer.version() + d_densityTransfer.version() + d_imageFile.version();
+}
+
 void NonUniformHexahedronFEMForceFieldAndMass::refresh() {
-  const std::uint64_t version = d_youngModulus.version() + d_poissonRatio.version() +
-                                d_density.version() + d_nbVirtualFinerLevels.version() +
-                                d_youngModulusTransfer.version() + d_densityTransfer.version() +
-                                d_imageFile.version();
+  const std::uint64_t version = materialVersion();
   if (version == m_materialVersion) return;
   // Keep the previous constants when the new material is refused (reported by computeConstants).
   auto elements = m_elements;

@@ -64,6 +64,15 @@ class NonUniformHexahedronFEMForceFieldAndMass final : public Mass<Vec3Types> {
       "SparseGridTopology's nbVirtualFinerLevels; 0: each hexahedron is one full element "
       "weighted by its filled fraction).",
       {.min = 0.0, .max = 8.0}};
+  Data<double> d_minimumFraction{
+      this,
+      "minimumFraction",
+      1e-3,
+      "Smallest filled fraction of a kept finest cell (the finite cell method's alpha): a cell "
+      "the surface crosses but whose sample points all fell outside counts as this fraction, "
+      "so that no point is left without mass and stiffness (a singular system). 0 keeps the "
+      "measured fractions as they are.",
+      {.min = 0.0, .max = 1.0}};
   Data<FileName> d_imageFile{this,
                              "imageFile",
                              {},
@@ -139,6 +148,8 @@ class NonUniformHexahedronFEMForceFieldAndMass final : public Mass<Vec3Types> {
   bool computeCellMaterials(std::span<const sparsegrid::FinerLevel> levels);
   /// Condenses every hexahedron and sets the element constants and masses; false after an error.
   bool computeConstants();
+  /// Sum of the versions of the Data the constants depend on.
+  std::uint64_t materialVersion() const;
   /// At the start of a step: recomputes the constants when the material Data changed.
   void refresh();
   fem::HexahedronVectors gather(std::span<const Vec3d> v, std::size_t e) const;

@@ -230,7 +230,8 @@ TEST(NonUniformHexahedronFEMForceFieldAndMass, TotalMassIsDensityTimesFilledVolu
     ASSERT_TRUE(loadQuietly(scene, sphereScene(5, levels,
                                                "<NonUniformHexahedronFEMForceFieldAndMass "
                                                "name=\"fem\" nbVirtualFinerLevels=\"" +
-                                                   L + "\" density=\"1070\"/>")));
+                                                   L + "\" density=\"1070\" "
+                                                       "minimumFraction=\"0\"/>")));
     const double total = numbers(dataText(scene, "/root/body/fem", "totalMass")).at(0);
     const double filled = filledVolume(scene);
     EXPECT_NEAR(total, rho * filled, 1e-12 * total);
@@ -241,6 +242,50 @@ TEST(NonUniformHexahedronFEMForceFieldAndMass, TotalMassIsDensityTimesFilledVolu
     for (double m : masses) sum += m;
     EXPECT_NEAR(sum, total, 1e-12 * total);
   }
+}
+
+TEST(NonUniformHexahedronFEMForceFieldAndMass, FractionFloorLeavesNoPointWithoutMassOrStiffness) {
+  // On the sphere in an 8^3 grid some boundary cells sample no material: with the measured
+  // fractions alone, their points have neither mass nor stiffness and a direct solver meets a
+  // zero pivot. The floor (minimumFraction, 1e-3 by default) gives them a little of both and
+  // changes the total mass by at most rho x alpha x the volume of the floored cells.
+  const auto lumped = [](Scene& scene) {
+    return numbers(dataText(scene, "/root/body/fem", "vertexMass"));
+  };
+  const std::string fem =
+      "<NonUniformHexahedronFEMForceFieldAndMass name=\"fem\" density=\"1000\" "
+      "youngModulus=\"1e4\" ";
+  Runtime runtime;
+  Scene measured(runtime), floored(runtime);
+  ASSERT_TRUE(loadQuietly(measured, sphereScene(8, 0, fem + "minimumFraction=\"0\"/>")));
+  ASSERT_TRUE(loadQuietly(floored, sphereScene(8, 0, fem + "/>")));
+  const std::vector<double> without = lumped(measured), with = lumped(floored);
+  ASSERT_EQ(without.size(), with.size());
+  const auto massless = std::count(without.begin(), without.end(), 0.0);
+  EXPECT_GT(massless, 0) << "the case this floor is for no longer occurs on this grid";
+  EXPECT_GT(*std::min_element(with.begin(), with.end()), 0.0);
+  const Eigen::SparseMatrix<double> K = assembleStiffness(floored);
+  for (int i = 0; i < K.rows(); ++i) EXPECT_LT(K.coeff(i, i), 0.0) << "dof " << i;
+  const Topology* grid = gridOf(floored);
+  const std::vector<double> fractions =
+      numbers(dataText(floored, "/root/body/grid", "volumeFractions"));
+  double added = 0;
+  for (std::size_t e = 0; e < fractions.size(); ++e)
+    added += std::max(0.0, 1e-3 - fractions[e]) * signedVolume(grid->positions(), grid->hexahedra()[e]);
+  const auto total = [](const std::vector<double>& m) {
+    double sum = 0;
+    for (double v : m) sum += v;
+    return sum;
+  };
+  EXPECT_NEAR(total(with) - total(without), 1000 * added, 1e-12 * total(with));
+  // A direct solver now takes an implicit step of the body under gravity.
+  Scene falling(runtime);
+  ASSERT_TRUE(loadQuietly(falling, sphereScene(8, 0,
+                                               "<EulerImplicitSolver/><SparseLDLSolver/>" +
+                                                   fem + "/>",
+                                               "gravity=\"0 -9.8 0\" dt=\"0.01\"")));
+  EXPECT_TRUE(falling.step(0.01));
+  EXPECT_EQ(falling.log().count(MessageLevel::error), 0u);
 }
 
 /// Total of the mass matrix of the bodies under `node` (sum of the entries of M, over 3).
@@ -283,6 +328,11 @@ TEST(NonUniformHexahedronFEMForceFieldAndMass, SofasSceneWithoutItsCollisionComp
     ASSERT_TRUE(erase(tag, "/>")) << tag;
   for (const char* node : {"<Node name=\"Colliunif\"", "<Node name=\"Collinonunif\""})
     ASSERT_TRUE(erase(node, "</Node>")) << node;
+  // The measured fractions as they are (no floor), for the exact mass identity below.
+  const std::string tag = "<NonUniformHexahedronFEMForceFieldAndMass ";
+  const auto component = text.find(tag);
+  ASSERT_NE(component, std::string::npos);
+  text.insert(component + tag.size(), "minimumFraction=\"0\" ");
   Runtime runtime;
   Scene scene(runtime);
   runtime.addDataDirectory(sofa / "share");
