@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "Precomputed/kernels/BasisCache.h"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -87,7 +89,8 @@ bool writeBasisCache(const std::string& path, std::uint64_t key, const Deformati
   std::error_code ec;
   const std::filesystem::path target(path);
   if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path(), ec);
-  const std::string temporary = path + ".tmp";
+  // One temporary name per process: two runs writing the same cache do not mix their bytes.
+  const std::string temporary = path + ".tmp" + std::to_string(::getpid());
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out) {

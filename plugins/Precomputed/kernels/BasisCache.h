@@ -32,8 +32,9 @@ std::uint64_t computeBasisKey(const std::vector<Eigen::Vector3d>& points,
                               double poissonRatio, const std::vector<int>& fixedDofs,
                               const std::vector<int>& basisNodes, const std::vector<int>& rowNodes);
 
-/// Writes `basis` under `key` to `path` (through a temporary file renamed at the end, so that
-/// an interrupted write leaves no partial file under that name). false and `error` on failure.
+/// Writes `basis` under `key` to `path` (through a temporary file of this process renamed at the
+/// end, so that an interrupted or concurrent write leaves no partial file under that name). false
+/// and `error` on failure.
 bool writeBasisCache(const std::string& path, std::uint64_t key, const DeformationBasis& basis,
                      std::string& error);
 

@@ -36,11 +36,6 @@ void PrecomputedLinearModel::init() {
     msgError("needs a MechanicalObject (Vec3d) in its node");
     return;
   }
-  if (!l_topology) l_topology.set(node()->template get<Topology>());
-  if (!l_topology || l_topology->tetrahedra().empty()) {
-    msgError("needs a topology with tetrahedra in its node, or a 'topology' link", "topology");
-    return;
-  }
   if (!fem::isValidIsotropicMaterial(d_youngModulus.value(), d_poissonRatio.value())) {
     msgError("youngModulus = " + formatNumber(d_youngModulus.value()) +
                  " Pa and poissonRatio = " + formatNumber(d_poissonRatio.value()) +
@@ -143,8 +138,21 @@ bool PrecomputedLinearModel::collectBasisNodes(const std::vector<int>& fixedDofs
   return true;
 }
 
+bool PrecomputedLinearModel::findTopology() {
+  // The last topology of the node holding tetrahedra: a grid split by Hexa2TetraTopologicalMapping
+  // fills its tetrahedra container at the mapping's init, which is why this waits for bwdInit.
+  if (!l_topology)
+    for (Topology* topology : node()->template getAll<Topology>())
+      if (!topology->tetrahedra().empty()) l_topology.set(topology);
+  if (!l_topology || l_topology->tetrahedra().empty()) {
+    msgError("needs a topology with tetrahedra in its node, or a 'topology' link", "topology");
+    return false;
+  }
+  return true;
+}
+
 void PrecomputedLinearModel::bwdInit() {
-  if (!isValid() || !m_state || !l_topology) return;
+  if (!isValid() || !m_state || !findTopology()) return;
   std::vector<int> fixedDofs, basisNodes;
   if (!collectFixedDofs(fixedDofs) || !collectBasisNodes(fixedDofs, basisNodes)) return;
   buildBasis(fixedDofs, basisNodes);

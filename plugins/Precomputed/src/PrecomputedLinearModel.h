@@ -86,8 +86,9 @@ class PrecomputedLinearModel final : public OdeSolver {
       this, "cacheFile", "", "Basis cache file; empty: <temp dir>/stroma-precomputed/<key>.basis."};
   Data<bool> d_useCache{this, "useCache", true,
                         "Load the basis from cacheFile when it matches, and write it there."};
-  Link<Topology> l_topology{this, "topology",
-                            "Topology holding the tetrahedra (default: the node's)."};
+  Link<Topology> l_topology{
+      this, "topology",
+      "Topology holding the tetrahedra (default: the node's last one with tetrahedra)."};
 
   Data<std::vector<Vec3d>> d_reactionForces{this,
                                             "reactionForces",
@@ -120,6 +121,7 @@ class PrecomputedLinearModel final : public OdeSolver {
   const precomputed::DeformationBasis* basis() const { return m_basis.get(); }
 
  private:
+  bool findTopology();
   bool collectFixedDofs(std::vector<int>& fixedDofs);
   bool collectBasisNodes(const std::vector<int>& fixedDofs, std::vector<int>& basisNodes);
   bool checkImposed();
