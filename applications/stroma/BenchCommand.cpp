@@ -15,8 +15,8 @@ namespace stroma::cli {
 int benchCommand(const std::vector<std::string>& args) {
   Arguments a;
   std::string error;
-  if (!parseArguments(args, {"--output", "--threads", "--data-path"}, {"--quick", "--verbose"}, a,
-                      error))
+  if (!parseArguments(args, {"--output", "--threads", "--data-path"},
+                      {"--quick", "--verbose", "--save-scenes"}, a, error))
     return usageError(error);
   if (a.positional.size() != 1)
     return usageError(a.positional.empty() ? "bench expects a study file"
@@ -48,7 +48,13 @@ int benchCommand(const std::vector<std::string>& args) {
   std::vector<StudyRow> rows;
   int unexpected = 0;
   for (const StudyCombination& c : combinations) {
-    rows.push_back(runStudyRow(runtime, study, c, options));
+    std::filesystem::path sceneCopy;
+    if (a.has("--save-scenes")) {
+      sceneCopy =
+          output / (study.name + "-scenes") / ("row" + std::to_string(rows.size() + 1) + ".scn");
+      std::filesystem::create_directories(sceneCopy.parent_path(), ec);
+    }
+    rows.push_back(runStudyRow(runtime, study, c, options, sceneCopy));
     const StudyRow& r = rows.back();
     std::string label;
     for (const auto& axis : kStudyAxes)

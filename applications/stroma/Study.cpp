@@ -28,13 +28,17 @@ std::string suggest(const std::string& name, const std::vector<std::string>& kno
   return near.empty() ? "" : "; did you mean " + quotedList(near) + "?";
 }
 
-/// The inner text of an element: its text, or its child elements printed back as XML (so that
-/// a substitution can be a scene fragment written as plain elements).
+/// The inner text of an element: its text and child elements printed back as XML (so that a
+/// substitution can be a scene fragment written as plain elements, mixed with placeholders).
 std::string innerXml(const XMLElement& e) {
   if (!e.FirstChildElement()) return e.GetText() ? e.GetText() : "";
   tinyxml2::XMLPrinter printer(nullptr, /*compact=*/false);
-  for (const XMLElement* c = e.FirstChildElement(); c; c = c->NextSiblingElement())
-    c->Accept(&printer);
+  for (const tinyxml2::XMLNode* c = e.FirstChild(); c; c = c->NextSibling()) {
+    if (const tinyxml2::XMLText* text = c->ToText())
+      printer.PushText(text->Value(), text->CData());  // as written: no escaping of ${...}
+    else
+      c->Accept(&printer);
+  }
   return printer.CStr();
 }
 
@@ -255,7 +259,8 @@ bool readStudy(const std::filesystem::path& file, Study& s, std::string& error) 
     return false;
   s.title = root->Attribute("title") ? root->Attribute("title") : s.name;
 
-  const std::vector<std::string> elements = {"Scene", "Axis", "Error", "Column", "Skip", "Expect"};
+  const std::vector<std::string> elements = {"Scene",  "Define", "Axis",  "Error",
+                                             "Column", "Skip",   "Expect"};
   bool haveError = false;
   std::vector<StudyColumn> extraColumns;
   for (const XMLElement* e = root->FirstChildElement(); e; e = e->NextSiblingElement()) {
@@ -266,6 +271,13 @@ bool readStudy(const std::filesystem::path& file, Study& s, std::string& error) 
         return false;
       }
       if (!readScene(s, *e, error)) return false;
+    } else if (tag == "Define") {
+      if (!checkAttributes(s, *e, {"name"}, error)) return false;
+      if (!e->Attribute("name") || !*e->Attribute("name")) {
+        error = at(s, e->GetLineNum(), "<Define> needs the name of the placeholder it sets");
+        return false;
+      }
+      s.defines[e->Attribute("name")] = innerXml(*e);
     } else if (tag == "Axis") {
       if (!checkAttributes(s, *e, {"name"}, error)) return false;
       const std::string name = e->Attribute("name") ? e->Attribute("name") : "";
@@ -303,7 +315,8 @@ bool readStudy(const std::filesystem::path& file, Study& s, std::string& error) 
       }
       s.axes.push_back(std::move(axis));
     } else if (tag == "Error") {
-      if (!checkAttributes(s, *e, {"component", "max", "rms", "scale"}, error)) return false;
+      if (!checkAttributes(s, *e, {"component", "max", "rms", "scale", "label"}, error))
+        return false;
       StudyColumn max, rms;
       if (!readColumn(s, *e, "max_error", "max", max, error) ||
           !readColumn(s, *e, "rms_error", "rms", rms, error))
@@ -311,6 +324,7 @@ bool readStudy(const std::filesystem::path& file, Study& s, std::string& error) 
       if (max.data.empty()) max.data = "maxError";
       if (rms.data.empty()) rms.data = "rmsError";
       s.errors.insert(s.errors.begin(), {max, rms});
+      s.errorLabel = e->Attribute("label") ? e->Attribute("label") : "max_error";
       haveError = true;
     } else if (tag == "Column") {
       if (!checkAttributes(s, *e, {"name", "component", "data", "scale"}, error)) return false;
@@ -397,7 +411,7 @@ std::vector<StudyCombination> studyCombinations(const Study& s, bool quick) {
 
 bool substituteScene(const Study& s, const StudyCombination& c, std::string& text,
                      std::string& error) {
-  std::map<std::string, std::string> table;
+  std::map<std::string, std::string> table = s.defines;
   table["studyDir"] = std::filesystem::absolute(s.file).parent_path().string();
   for (const auto& [axis, value] : c.values) {
     table[axis] = value->name;  // ${model} is the value's name unless a Set says otherwise

@@ -59,7 +59,9 @@ struct Study {
   long long quickSteps = 0;  ///< 0: as steps
   double timeLimit = 120;    ///< seconds of stepping per row before it is stopped
   std::vector<StudyAxis> axes;
+  std::map<std::string, std::string> defines;  ///< <Define>: placeholders of every row
   std::vector<StudyColumn> errors;  ///< max_error and rms_error first, then extra columns
+  std::string errorLabel;           ///< the plot's y axis (<Error label>)
   std::vector<StudyFilter> skips;
   std::vector<StudyFilter> expectedFailures;
 };

@@ -96,7 +96,7 @@ std::string number(double v) {
 }  // namespace
 
 StudyRow runStudyRow(Runtime& runtime, const Study& study, const StudyCombination& combination,
-                     const StudyOptions& options) {
+                     const StudyOptions& options, const std::filesystem::path& sceneCopy) {
   StudyRow row;
   for (const auto& [axis, value] : combination.values) row.axes[axis] = value->name;
   row.errors.assign(study.errors.size(), kNaN);
@@ -108,6 +108,7 @@ StudyRow runStudyRow(Runtime& runtime, const Study& study, const StudyCombinatio
     row.reason = error;
     return row;
   }
+  if (!sceneCopy.empty()) std::ofstream(sceneCopy) << text;
   Scene scene(runtime);
   scene.setThreadCount(options.threads);
   if (options.verbose)
@@ -228,7 +229,7 @@ std::string writeStudyPlot(const std::filesystem::path& file, const Study& study
   report::ChartAxes axes;
   axes.title = study.title;
   axes.xLabel = "wall time of the steps (s)";
-  axes.yLabel = study.errors.front().column + " (max error)";
+  axes.yLabel = study.errorLabel;
   axes.logX = axes.logY = true;
   return report::writeChartPng(file.string(), axes, series);
 }

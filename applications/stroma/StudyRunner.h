@@ -42,9 +42,10 @@ struct StudyOptions {
   bool verbose = false;  ///< scene warnings to stderr
 };
 
-/// Loads, runs and measures one combination.
+/// Loads, runs and measures one combination; `sceneCopy` (when not empty) receives the scene
+/// text as run, so that a user can rerun a row with `stroma run`.
 StudyRow runStudyRow(Runtime& runtime, const Study& study, const StudyCombination& combination,
-                     const StudyOptions& options);
+                     const StudyOptions& options, const std::filesystem::path& sceneCopy);
 
 /// Writes the CSV (columns model,resolution,solver,dt,steps,steps_per_s,wall_s,max_error,
 /// rms_error, the study's extra columns, then load_s,status,reason). Returns what went wrong,

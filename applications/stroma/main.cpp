@@ -28,6 +28,7 @@ Usage:
       --output DIR                  where the CSV and the plot go (default bench-results)
       --threads N                   threads per scene (default 1; 0: all cores)
       --data-path DIR               as for run
+      --save-scenes                 also write each row's scene as DIR/STUDY-scenes/rowN.scn
   stroma list [--plugin NAME]       available components, by plugin
   stroma doc COMPONENT              every field of a component: type, default, unit, help
   stroma plugin-index LIB --output FILE

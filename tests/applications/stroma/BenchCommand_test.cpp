@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "CommandLine.h"
@@ -64,7 +65,8 @@ BenchResult bench(const std::vector<std::string>& args) {
 }
 
 // A TestCounter adds `increment` to `total` at each step and fails at step `fail` (0: never);
-// `elapsed` sums the time steps. Model b fails at its second step.
+// `elapsed` sums the time steps. Model b fails at its second step (its Set overrides the
+// Define).
 const char* kTinyStudy = R"(<?xml version="1.0"?>
 <Study title="tiny" steps="3" quickSteps="2">
   <Scene>
@@ -73,10 +75,11 @@ const char* kTinyStudy = R"(<?xml version="1.0"?>
       <MechanicalObject name="dofs" position="0 0 0" />
     </Node>
   </Scene>
+  <Define name="fail">0</Define>
   <Error component="TestCounter" max="total" rms="elapsed" />
   <Column name="count" component="counter" data="count" />
   <Axis name="model">
-    <Value name="a"><Set name="increment">1.5</Set><Set name="fail">0</Set></Value>
+    <Value name="a"><Set name="increment">1.5</Set></Value>
     <Value name="b"><Set name="increment">2</Set><Set name="fail">2</Set></Value>
   </Axis>
   <Axis name="dt">
@@ -211,6 +214,43 @@ TEST(BenchCommand, BadStudyFilesNameFileAndLine) {
                  4, "names model 'b', which is not a value of that axis");
   expectBadStudy("<Study>\n" + scene + "  <Scenario />\n</Study>\n", 3,
                  "unknown element <Scenario>");
+}
+
+// The quick version of the cantilever study (bench/studies/Cantilever.xml, well under a minute):
+// every row runs, and for each model and solver the tip error falls as the mesh is refined
+// (10x1x1 -> 20x2x2 cells); the static solver and implicit Euler settle on the same
+// equilibrium (to 1 % of the tip deflection).
+TEST(BenchCommand, QuickCantileverStudyConverges) {
+  TempDir dir;
+  const BenchResult r = bench({std::string(STROMA_SOURCE_DIR) + "/bench/studies/Cantilever.xml",
+                               "--quick", "--output", dir.path().string()});
+  ASSERT_EQ(r.exitCode, cli::kSuccess) << r.err;
+  const Table t = readCsv(dir.path() / "Cantilever.csv");
+  ASSERT_GT(t.size(), 8u);
+  const std::size_t model = column(t, "model"), resolution = column(t, "resolution"),
+                    solver = column(t, "solver"), maxError = column(t, "max_error"),
+                    status = column(t, "status");
+  std::map<std::string, double> error;  // "model/solver/resolution" -> max_error
+  for (std::size_t i = 1; i < t.size(); ++i) {
+    EXPECT_EQ(t[i][status], "ok") << t[i][model] << " " << t[i][resolution] << " " << t[i][solver];
+    error[t[i][model] + "/" + t[i][solver] + "/" + t[i][resolution]] = std::stod(t[i][maxError]);
+  }
+  int pairs = 0;
+  for (const auto& [key, coarse] : error) {
+    if (key.find("/10x1x1") == std::string::npos) continue;
+    const std::string stem = key.substr(0, key.size() - 6);
+    ASSERT_TRUE(error.count(stem + "20x2x2")) << stem;
+    EXPECT_LT(error[stem + "20x2x2"], 0.9 * coarse) << stem;
+    ++pairs;
+    if (stem.find("/static/") != std::string::npos) {
+      const std::string dynamic = stem.substr(0, stem.find("/static/")) + "/implicit-cg/";
+      for (const char* res : {"10x1x1", "20x2x2"}) {
+        ASSERT_TRUE(error.count(dynamic + res)) << dynamic;
+        EXPECT_NEAR(error[dynamic + res], error[stem + res], 0.01) << dynamic << res;
+      }
+    }
+  }
+  EXPECT_GE(pairs, 4);
 }
 
 TEST(BenchCommand, UsageErrors) {
