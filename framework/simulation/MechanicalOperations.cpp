@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/Message.h"
 #include "core/Node.h"
 #include "simulation/ForceField.h"
 #include "simulation/Mapping.h"
@@ -287,14 +288,31 @@ double MechanicalOperations::kineticEnergy() const {
 }
 
 bool MechanicalOperations::checkFinite(VecId v, const std::string& what, Base& reporter) const {
+  const WorstVertex worst = worstVertex(v);
+  if (!worst.state || std::isfinite(worst.value)) return true;
+  reporter.msgError("the simulation diverged at time " + std::to_string(endTime()) + ": " + what +
+                    " of " + worst.state->path() + " is not finite at index " +
+                    std::to_string(worst.index));
+  return false;
+}
+
+MechanicalOperations::WorstVertex MechanicalOperations::worstVertex(VecId v) const {
+  WorstVertex worst;
   for (const BaseMechanicalState* s : m_independent) {
     std::size_t where = 0;
-    if (std::isfinite(s->vMaxAbs(v, where))) continue;
-    reporter.msgError("the simulation diverged at time " + std::to_string(endTime()) + ": " + what +
-                      " of " + s->path() + " is not finite at index " + std::to_string(where));
-    return false;
+    const double value = s->vMaxAbs(v, where);
+    if (worst.state && std::isfinite(value) && value <= worst.value) continue;
+    worst = {s, where, value};
+    if (!std::isfinite(value)) break;  // the first non-finite value is the one to report
   }
-  return true;
+  return worst;
+}
+
+std::string MechanicalOperations::describeWorstVertex(VecId v, const std::string& what) const {
+  const WorstVertex worst = worstVertex(v);
+  if (!worst.state) return "no state";
+  return "vertex " + std::to_string(worst.index) + " of " + worst.state->path() + " (|" + what +
+         "| component " + formatNumber(worst.value) + ")";
 }
 
 }  // namespace stroma

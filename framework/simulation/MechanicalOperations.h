@@ -93,9 +93,19 @@ class MechanicalOperations {
   double potentialEnergy(const MechanicalParams& mp) const;
   double kineticEnergy() const;
 
-  /// Reports NaN or infinity in `v` as an error of `reporter` (with the state, the degree of
-  /// freedom and the time at the end of the step, endTime()) and returns false.
+  /// Reports NaN or infinity in `v` as an error of `reporter` (with the state, the index of the
+  /// first non-finite vertex and the time at the end of the step, endTime()) and returns false.
   bool checkFinite(VecId v, const std::string& what, Base& reporter) const;
+  /// The vertex where `v` is worst over the independent states: the first non-finite value, or
+  /// else the largest absolute component. Divergence reports name it.
+  struct WorstVertex {
+    const BaseMechanicalState* state = nullptr;  ///< null when there is no state
+    std::size_t index = 0;
+    double value = 0;  ///< the largest absolute component (or the non-finite one)
+  };
+  WorstVertex worstVertex(VecId v) const;
+  /// "vertex 12 of /root/Body/dofs (|velocity| component 3.2e+04)", `what` naming `v`.
+  std::string describeWorstVertex(VecId v, const std::string& what) const;
 
  private:
   void collect(Node& node, bool isSolverNode);

@@ -14,7 +14,7 @@ void CentralDifferenceSolver::solve(MechanicalOperations& mop, double dt) {
   MechanicalParams mp;
   mp.dt = h;
   mop.computeForce(mp, f);
-  m_stability.check(mop, h);
+  if (!m_stability.check(mop, h, m_divergence, m_step)) return;
   const VecId a = mop.allocDeriv();
   if (!mop.accFromF(a, f)) return;
   mop.projectResponse(a);
@@ -26,7 +26,7 @@ void CentralDifferenceSolver::solve(MechanicalOperations& mop, double dt) {
   mop.vOp(x, x, v, h);
   mop.projectPosition(x);
   mop.projectVelocity(v);
-  finishStep(mop, *this, m_step);
+  finishStep(mop, *this, m_step, m_divergence, &m_energy);
 }
 
 }  // namespace stroma

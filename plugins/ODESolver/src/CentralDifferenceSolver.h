@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "DivergenceMonitor.h"
 #include "StabilityBound.h"
 #include "simulation/Solvers.h"
 
@@ -28,9 +29,12 @@ class CentralDifferenceSolver final : public OdeSolver {
                                  "SOFA option, accepted and without effect."};
 
   void solve(MechanicalOperations& mop, double dt) override;
+  void cleanup() override { m_divergence.summarize(m_step); }
 
  private:
   long long m_step = 0;
+  DivergenceMonitor m_divergence{*this};
+  EnergyGrowthCheck m_energy{*this};
 
  public:
   ExplicitStabilityCheck m_stability{*this, 2.0, "central differences"};

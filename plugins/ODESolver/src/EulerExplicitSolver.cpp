@@ -21,7 +21,7 @@ void EulerExplicitSolver::solve(MechanicalOperations& mop, double dt) {
   MechanicalParams mp;
   mp.dt = dt;
   mop.computeForce(mp, f);
-  if (d_symplectic.value()) m_stability.check(mop, dt);
+  if (d_symplectic.value() && !m_stability.check(mop, dt, m_divergence, m_step)) return;
   const VecId a = mop.allocDeriv();
 
   // a = M^-1 f: a division for lumped masses, a linear solve otherwise.
@@ -36,7 +36,9 @@ void EulerExplicitSolver::solve(MechanicalOperations& mop, double dt) {
     massOnly.dt = dt;
     massOnly.mFactor = 1.0;
     massOnly.kFactor = 0.0;
-    l_linearSolver->solve(mop, massOnly, a, f);
+    const LinearSolveReport report = l_linearSolver->solve(mop, massOnly, a, f);
+    if (!checkLinearSolve(mop, m_divergence, m_linear, report, *l_linearSolver.get(), m_step, a))
+      return;
   }
   mop.projectResponse(a);
 
@@ -49,7 +51,7 @@ void EulerExplicitSolver::solve(MechanicalOperations& mop, double dt) {
   }
   mop.projectPosition(x);
   mop.projectVelocity(v);
-  finishStep(mop, *this, m_step);
+  finishStep(mop, *this, m_step, m_divergence, &m_energy);
 }
 
 }  // namespace stroma

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "DivergenceMonitor.h"
 #include "StabilityBound.h"
 #include "core/Link.h"
 #include "simulation/Solvers.h"
@@ -30,9 +31,13 @@ class EulerExplicitSolver final : public OdeSolver {
 
   void init() override;
   void solve(MechanicalOperations& mop, double dt) override;
+  void cleanup() override { m_divergence.summarize(m_step); }
 
  private:
   long long m_step = 0;
+  DivergenceMonitor m_divergence{*this};
+  EnergyGrowthCheck m_energy{*this};
+  LinearSolveCheck m_linear{*this};
 
  public:
   ExplicitStabilityCheck m_stability{*this, 2.0, "symplectic Euler"};

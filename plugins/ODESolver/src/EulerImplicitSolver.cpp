@@ -86,7 +86,9 @@ void EulerImplicitSolver::solve(MechanicalOperations& mop, double dt) {
 
   // Linearized step.
   mop.vOp(dv, VecId::null(), VecId::null(), 0.0);
-  l_linearSolver->solve(mop, matrix, dv, b);
+  const LinearSolveReport first = l_linearSolver->solve(mop, matrix, dv, b);
+  if (!checkLinearSolve(mop, m_divergence, m_linear, first, *l_linearSolver.get(), m_step, dv))
+    return;
   if (firstOrder) {
     mop.vOp(v, VecId::null(), dv, 1.0 / h);
     mop.vOp(x, x, dv, 1.0);
@@ -99,12 +101,18 @@ void EulerImplicitSolver::solve(MechanicalOperations& mop, double dt) {
   // Newton iterations on the residual, x and v moving together (dx = h dv).
   double residual = -1;
   if (newtonIterations > 1) {
+    double previous = -1;  // the residual before the last solve
+    bool lastLowered = true;
     while (true) {
       computeResidual(mop, h, tmp, mvn);
       residual = mop.norm(tmp) / scale;
+      if (previous >= 0) lastLowered = residual < previous;
       if (residual <= d_newtonTolerance.value() || solves >= newtonIterations) break;
+      previous = residual;
       mop.vOp(dv, VecId::null(), VecId::null(), 0.0);
-      l_linearSolver->solve(mop, matrix, dv, tmp);
+      const LinearSolveReport next = l_linearSolver->solve(mop, matrix, dv, tmp);
+      if (!checkLinearSolve(mop, m_divergence, m_linear, next, *l_linearSolver.get(), m_step, dv))
+        return;
       if (firstOrder) {
         mop.vOp(x, x, dv, 1.0);
         mop.vOp(v, v, dv, 1.0 / h);
@@ -120,6 +128,19 @@ void EulerImplicitSolver::solve(MechanicalOperations& mop, double dt) {
                      " > newtonTolerance " + std::to_string(d_newtonTolerance.value()) +
                      " (raise newtonIterations or lower dt); later ones are counted",
                  "newtonIterations");
+    // A stall: Newton ended unconverged without progress (|r| is in tmp).
+    if (residual > d_newtonTolerance.value() && (!lastLowered || !(residual < 1))) {
+      const std::string reason = "Newton stopped after " + std::to_string(solves) +
+                                 " linear solves with relative "
+                                 "residual " +
+                                 formatNumber(residual) +
+                                 (lastLowered ? ", not below the first right-hand side's"
+                                              : ", the last iteration having raised it") +
+                                 " (lower dt: the step is too nonlinear for the linearized matrix)";
+      if (!m_divergence.report(mop, DivergenceKind::newtonStall, m_step, reason,
+                               mop.describeWorstVertex(tmp, "residual"), "newtonIterations"))
+        return;
+    }
   } else if (d_computeResidual.value()) {
     computeResidual(mop, h, tmp, mvn);
     residual = mop.norm(tmp) / scale;
@@ -135,10 +156,11 @@ void EulerImplicitSolver::solve(MechanicalOperations& mop, double dt) {
   if (d_vdamping.value() > 0) mop.vOp(v, VecId::null(), v, std::exp(-h * d_vdamping.value()));
   mop.projectPosition(x);
   mop.projectVelocity(v);
-  finishStep(mop, *this, m_step);
+  finishStep(mop, *this, m_step, m_divergence, &m_energy);
 }
 
 void EulerImplicitSolver::cleanup() {
+  m_divergence.summarize(m_step);
   if (m_unconverged > 1)
     msgWarning("Newton did not converge in " + std::to_string(m_unconverged) + " of " +
                    std::to_string(m_step) + " steps",

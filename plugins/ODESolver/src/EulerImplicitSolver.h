@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "DivergenceMonitor.h"
 #include "core/Link.h"
 #include "simulation/Solvers.h"
 
@@ -22,6 +23,9 @@ namespace stroma {
 ///
 /// Reports: dt <= 0, a missing linear solver, non-finite results (the run stops with exit
 /// code 1); a warning the first time Newton stops unconverged, the count at the end of the run.
+/// Divergences (DivergenceMonitor.h, after onDivergence): kinetic energy growth, a linear solve
+/// stopped above maxLinearResidual, and a stalled Newton iteration: unconverged with a last
+/// iteration that did not lower the residual, or a final residual not below the first one.
 class EulerImplicitSolver final : public OdeSolver {
  public:
   Data<double> d_rayleighStiffness{this,
@@ -84,6 +88,9 @@ class EulerImplicitSolver final : public OdeSolver {
 
   long long m_step = 0;
   long long m_unconverged = 0;
+  DivergenceMonitor m_divergence{*this};
+  EnergyGrowthCheck m_energy{*this};
+  LinearSolveCheck m_linear{*this};
 };
 
 }  // namespace stroma

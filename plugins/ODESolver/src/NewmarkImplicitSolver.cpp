@@ -91,7 +91,9 @@ void NewmarkImplicitSolver::solve(MechanicalOperations& mop, double dt) {
   matrix.dt = h;
   matrix.mFactor = 1.0 + h * gamma * rm;
   matrix.kFactor = -(h * h * beta + h * gamma * rs);
-  l_linearSolver->solve(mop, matrix, a1, b);
+  const LinearSolveReport report = l_linearSolver->solve(mop, matrix, a1, b);
+  if (!checkLinearSolve(mop, m_divergence, m_linear, report, *l_linearSolver.get(), m_step, a1))
+    return;
   mop.projectResponse(a1);
 
   // Newmark updates: x first (it uses v_n).
@@ -104,7 +106,7 @@ void NewmarkImplicitSolver::solve(MechanicalOperations& mop, double dt) {
   mop.projectVelocity(v);
   mop.gather(a1, m_acceleration);
   m_hasAcceleration = true;
-  finishStep(mop, *this, m_step);
+  finishStep(mop, *this, m_step, m_divergence, &m_energy);
 }
 
 }  // namespace stroma

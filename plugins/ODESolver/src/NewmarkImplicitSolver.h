@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 
+#include "DivergenceMonitor.h"
 #include "core/Link.h"
 #include "simulation/Solvers.h"
 
@@ -49,6 +50,7 @@ class NewmarkImplicitSolver final : public OdeSolver {
 
   void init() override;
   void solve(MechanicalOperations& mop, double dt) override;
+  void cleanup() override { m_divergence.summarize(m_step); }
 
  private:
   /// a_0 from M a_0 = f_0 - C v_0 (f_0 in the force vector, C v_0 added here).
@@ -57,6 +59,9 @@ class NewmarkImplicitSolver final : public OdeSolver {
   Eigen::VectorXd m_acceleration;  ///< a_n of the independent states, between steps
   bool m_hasAcceleration = false;
   long long m_step = 0;
+  DivergenceMonitor m_divergence{*this};
+  EnergyGrowthCheck m_energy{*this};
+  LinearSolveCheck m_linear{*this};
 };
 
 }  // namespace stroma

@@ -33,7 +33,7 @@ void RungeKutta4Solver::solve(MechanicalOperations& mop, double dt) {
 
   // k1 = (v_n, a(x_n, v_n)).
   if (!acceleration(mop, h, x, v, a)) return;
-  m_stability.check(mop, h);  // linearized at (x_n, v_n)
+  if (!m_stability.check(mop, h, m_divergence, m_step)) return;  // linearized at (x_n, v_n)
   mop.vOp(sumV, v);
   mop.vOp(sumA, a);
   mop.vOp(xs, x, v, h / 2);
@@ -55,7 +55,7 @@ void RungeKutta4Solver::solve(MechanicalOperations& mop, double dt) {
   mop.vOp(v, v, sumA, h / 6);
   mop.projectPosition(x);
   mop.projectVelocity(v);
-  finishStep(mop, *this, m_step);
+  finishStep(mop, *this, m_step, m_divergence, &m_energy);
 }
 
 }  // namespace stroma

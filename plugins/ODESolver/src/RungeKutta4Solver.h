@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "DivergenceMonitor.h"
 #include "StabilityBound.h"
 #include "simulation/Solvers.h"
 
@@ -19,9 +20,12 @@ namespace stroma {
 class RungeKutta4Solver final : public OdeSolver {
  public:
   void solve(MechanicalOperations& mop, double dt) override;
+  void cleanup() override { m_divergence.summarize(m_step); }
 
  private:
   long long m_step = 0;
+  DivergenceMonitor m_divergence{*this};
+  EnergyGrowthCheck m_energy{*this};
 
  public:
   ExplicitStabilityCheck m_stability{*this, 2.0 * std::sqrt(2.0), "the classic Runge-Kutta scheme"};

@@ -11,7 +11,7 @@
 
 namespace stroma {
 
-double largestFrequency(MechanicalOperations& mop, int iterations) {
+double largestFrequency(MechanicalOperations& mop, int iterations, std::string* where) {
   const auto& masses = mop.masses();
   if (masses.empty() ||
       !std::all_of(masses.begin(), masses.end(), [](const BaseMass* m) { return m->isDiagonal(); }))
@@ -53,6 +53,7 @@ double largestFrequency(MechanicalOperations& mop, int iterations) {
     mop.projectResponse(a);
     const double vMv = mop.dot(v, a);
     if (vMv > 0 && vKv > 0) omega2 = vKv / vMv;
+    if (where) *where = mop.describeWorstVertex(v, "highest mode");
   }
   mop.freeVec(a);
   mop.freeVec(kv);
@@ -60,21 +61,33 @@ double largestFrequency(MechanicalOperations& mop, int iterations) {
   return std::sqrt(omega2);
 }
 
-void ExplicitStabilityCheck::check(MechanicalOperations& mop, double dt) {
-  if (dt == m_checkedDt) return;
-  m_checkedDt = dt;
-  const double omega = largestFrequency(mop);
-  const double bound = omega > 0 ? m_constant / omega : 0.0;
-  d_criticalTimeStep.setValue(bound);
-  if (!(bound > 0) || dt <= bound) return;
-  char text[320];
-  std::snprintf(text, sizeof text,
-                "dt = %.4g s is above the stability bound of %s, %.4g s (= %.4g / omega_max, "
-                "omega_max = %.4g rad/s the largest natural frequency of the scene); the run will "
-                "diverge unless damping or the nonlinearity saves it: lower dt below %.4g s, or "
-                "use EulerImplicitSolver",
-                dt, m_scheme, bound, m_constant, omega, bound);
-  m_solver.msgWarning(text);
+bool ExplicitStabilityCheck::check(MechanicalOperations& mop, double dt, DivergenceMonitor& monitor,
+                                   long long step) {
+  const bool estimated = dt != m_checkedDt;
+  if (estimated) {
+    m_checkedDt = dt;
+    const double omega = largestFrequency(mop, 60, &m_where);
+    m_bound = omega > 0 ? m_constant / omega : 0.0;
+    d_criticalTimeStep.setValue(m_bound);
+    m_aboveBound = m_bound > 0 && dt > m_bound;
+    if (m_aboveBound) {
+      char text[320];
+      std::snprintf(text, sizeof text,
+                    "dt = %.4g s is above the stability bound of %s, %.4g s (= %.4g / omega_max, "
+                    "omega_max = %.4g rad/s the largest natural frequency of the scene); the run "
+                    "will diverge unless damping or the nonlinearity saves it: lower dt below "
+                    "%.4g s, or use EulerImplicitSolver",
+                    dt, m_scheme, m_bound, m_constant, omega, m_bound);
+      m_text = text;
+    }
+  }
+  if (!m_aboveBound) return true;
+  // Refused at every step while dt stays above the bound (each step fails), or warned once.
+  if (monitor.stops())
+    return monitor.report(mop, DivergenceKind::stabilityBound, step,
+                          m_text + "; refused before integrating", m_where, "dt");
+  if (estimated) m_solver.msgWarning(m_text);
+  return true;
 }
 
 }  // namespace stroma

@@ -9,6 +9,9 @@
 // force fields are, by power iteration on the lumped mass and the tangent stiffness.
 #pragma once
 
+#include <string>
+
+#include "DivergenceMonitor.h"
 #include "core/Data.h"
 #include "simulation/Solvers.h"
 
@@ -19,11 +22,15 @@ class MechanicalOperations;
 /// omega_max of the linearization of the current forces (call after computeForce: force fields
 /// linearize at the positions of their last addForce), by `iterations` power iterations on
 /// M^-1 (-K) and a final Rayleigh quotient. Returns 0 when the masses are not all lumped (the
-/// estimate would need a linear solve) or when nothing is stiff.
-double largestFrequency(MechanicalOperations& mop, int iterations = 60);
+/// estimate would need a linear solve) or when nothing is stiff. `where`, when given, receives
+/// the vertex where that highest mode is largest (the stiffest or lightest spot of the mesh).
+double largestFrequency(MechanicalOperations& mop, int iterations = 60,
+                        std::string* where = nullptr);
 
 /// Keeps an explicit solver's stability bound (output Data `criticalTimeStep`), estimated at the
-/// first step and again whenever dt changes, and warns once per time step value that is above it.
+/// first step, before anything moves (the force fields must have linearized: init is too early),
+/// and again whenever dt changes. A time step above it is warned about once per value, or
+/// refused when the solver's onDivergence is "stop" (DivergenceMonitor.h).
 class ExplicitStabilityCheck {
  public:
   ExplicitStabilityCheck(OdeSolver& solver, double schemeConstant, const char* schemeName)
@@ -33,7 +40,10 @@ class ExplicitStabilityCheck {
   OdeSolver& m_solver;  // first: the Data below registers with it
   double m_constant;
   const char* m_scheme;
-  double m_checkedDt = -1;
+  double m_checkedDt = -1;  // the estimate below is for this dt
+  double m_bound = 0;
+  bool m_aboveBound = false;
+  std::string m_text, m_where;  // the report, and where the highest mode is largest
 
  public:
   Data<double> d_criticalTimeStep{&m_solver,
@@ -44,8 +54,9 @@ class ExplicitStabilityCheck {
                                   "be estimated).",
                                   {.unit = "s", .output = true}};
 
-  /// Call after the step's computeForce.
-  void check(MechanicalOperations& mop, double dt);
+  /// Call after the step's computeForce, before integrating. Returns false when dt is above the
+  /// bound and `monitor` stops the run (an error then names the step and the bound).
+  bool check(MechanicalOperations& mop, double dt, DivergenceMonitor& monitor, long long step);
 };
 
 }  // namespace stroma

@@ -83,7 +83,9 @@ void StaticSolver::solve(MechanicalOperations& mop, double dt) {
     ++iteration;
     // Newton direction: -K du = R.
     mop.vOp(du, VecId::null(), VecId::null(), 0.0);
-    l_linearSolver->solve(mop, stiffness, du, f);
+    const LinearSolveReport report = l_linearSolver->solve(mop, stiffness, du, f);
+    if (!checkLinearSolve(mop, m_divergence, m_linear, report, *l_linearSolver.get(), m_step, du))
+      return;
     mop.projectResponse(du);
 
     // Backtracking line search on |R(x + alpha du)|.
@@ -107,7 +109,8 @@ void StaticSolver::solve(MechanicalOperations& mop, double dt) {
         msgWarning("the line search failed at step " + std::to_string(m_step) +
                        ", Newton iteration " + std::to_string(iteration) +
                        ": no step along the Newton direction reduces the residual |R| = " +
-                       formatNumber(normR) + " N (smallest step tried: " + formatNumber(alpha) + "); " +
+                       formatNumber(normR) + " N (smallest step tried: " + formatNumber(alpha) +
+                       "); " +
                        (set.fullStepWhenLineSearchFails ? "the full step is taken"
                                                         : "the solver stays at the last point") +
                        ". The matrix may not be the derivative of the forces, or the load is "
@@ -170,8 +173,8 @@ void StaticSolver::solve(MechanicalOperations& mop, double dt) {
   if (!converged) setStatus(lineSearchFailed ? "DivergedLineSearch" : "DivergedMaxIterations");
   if (log)
     msgInfo("step " + std::to_string(m_step) + ": " + (converged ? "converged" : "not converged") +
-            " after " + std::to_string(iteration) + " Newton iteration(s), |R| = " + formatNumber(normR) +
-            " N (|R_0| = " + formatNumber(normR0) + " N)");
+            " after " + std::to_string(iteration) + " Newton iteration(s), |R| = " +
+            formatNumber(normR) + " N (|R_0| = " + formatNumber(normR0) + " N)");
   if (!converged && !stalled && set.warnWhenNotConverged && m_unconverged++ == 0)
     msgWarning("Newton did not converge in " + std::to_string(iteration) + " iterations at step " +
                    std::to_string(m_step) + ": |R| = " + formatNumber(normR) +
@@ -179,12 +182,30 @@ void StaticSolver::solve(MechanicalOperations& mop, double dt) {
                    " N (raise the iterations, or loosen the thresholds); later ones are "
                    "counted",
                l_newtonSolver ? "newtonSolver" : "newton_iterations");
+  // A stall (f holds the residual at the current point).
+  const bool noProgress = set.iterations > 1 && !converged && !(normR < normR0);
+  if (stalled || noProgress) {
+    const std::string reason =
+        stalled ? "no step along the Newton direction lowers the residual |R| = " +
+                      formatNumber(normR) + " N (Newton iteration " + std::to_string(iteration) +
+                      "; the load may be past a limit point, or the tangent is not the forces' "
+                      "derivative)"
+                : "Newton ended after " + std::to_string(iteration) +
+                      " iterations with |R| = " + formatNumber(normR) +
+                      " N, not below |R_0| = " + formatNumber(normR0) +
+                      " N (smaller load increments: more time steps)";
+    if (!m_divergence.report(mop, DivergenceKind::newtonStall, m_step, reason,
+                             mop.describeWorstVertex(f, "residual force"),
+                             stalled ? "maxNbIterationsLineSearch" : "newton_iterations"))
+      return;
+  }
   mop.projectPosition(x);
   mop.vOp(v, VecId::null(), VecId::null(), 0.0);
-  finishStep(mop, *this, m_step);
+  finishStep(mop, *this, m_step, m_divergence);
 }
 
 void StaticSolver::cleanup() {
+  m_divergence.summarize(m_step);
   const char* field = l_newtonSolver ? "newtonSolver" : "newton_iterations";
   if (m_stalls > 1)
     msgWarning("the line search failed in " + std::to_string(m_stalls) +

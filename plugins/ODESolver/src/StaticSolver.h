@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include "DivergenceMonitor.h"
 #include "NewtonRaphsonSolver.h"
 #include "NewtonSettings.h"
 #include "core/Link.h"
@@ -27,7 +28,12 @@ namespace stroma {
 ///
 /// Reports: with printLog, each iteration (|R|, |du|, a) and the outcome. A warning the first
 /// time the line search stalls, and the first time newton_iterations > 1 ends unconverged;
-/// later ones are counted at the end of the run.
+/// later ones are counted at the end of the run. Divergences (DivergenceMonitor.h, after
+/// onDivergence): a linear solve stopped above maxLinearResidual, and a stalled Newton
+/// iteration: the line search found no step that lowers |R| (above round-off) and the solver
+/// stayed at the last point (not when a NewtonRaphsonSolver asks for the full step), or
+/// newton_iterations > 1 ended unconverged with |R| not below |R_0|. No energy check: a static
+/// solver has no velocities.
 class StaticSolver final : public OdeSolver {
  public:
   Data<int> d_newtonIterations{this,
@@ -88,6 +94,8 @@ class StaticSolver final : public OdeSolver {
   long long m_step = 0;
   long long m_unconverged = 0;
   long long m_stalls = 0;
+  DivergenceMonitor m_divergence{*this};
+  LinearSolveCheck m_linear{*this};
 };
 
 }  // namespace stroma

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
 // Checks shared by every time integrator: a usable time step before the step, finite positions
-// and velocities after it. Free functions rather than a base class (STYLE.md section 4).
+// and velocities after it, the divergence checks of DivergenceMonitor.h. Free functions rather than
+// a base class (STYLE.md section 4).
 #pragma once
 
 #include <cmath>
 #include <cstdio>
 #include <string>
 
+#include "DivergenceMonitor.h"
 #include "core/Base.h"
 #include "simulation/MechanicalOperations.h"
 
@@ -27,14 +29,31 @@ inline bool checkTimeStep(Base& solver, double dt) {
 
 /// After a step: reports non-finite positions or velocities (naming the solver's step number,
 /// the time, the state and the index) and returns false; otherwise propagates the new state
-/// to the mapped states and returns true.
-inline bool finishStep(MechanicalOperations& mop, Base& solver, long long step) {
+/// to the mapped states, feeds the energy-growth check when there is one (dynamic solvers)
+/// and returns false only when that reports a divergence that stops the run.
+inline bool finishStep(MechanicalOperations& mop, Base& solver, long long step,
+                       DivergenceMonitor& monitor, EnergyGrowthCheck* energy = nullptr) {
   const VecId x = VecId::position(), v = VecId::velocity();
   const std::string when = " after step " + std::to_string(step);
   if (!mop.checkFinite(x, "position" + when, solver)) return false;
   if (!mop.checkFinite(v, "velocity" + when, solver)) return false;
   mop.propagate(x, v);
+  std::string reason;
+  if (energy && energy->grew(mop, reason))
+    return monitor.report(mop, DivergenceKind::energyGrowth, step, reason,
+                          mop.describeWorstVertex(v, "velocity"), "energyGrowth");
   return true;
+}
+
+/// After a linear solve whose solution is `solution`: reports it as a divergence when `check`
+/// says so. Returns false when the run stops.
+inline bool checkLinearSolve(MechanicalOperations& mop, DivergenceMonitor& monitor,
+                             const LinearSolveCheck& check, const LinearSolveReport& report,
+                             const Base& linearSolver, long long step, VecId solution) {
+  std::string reason;
+  if (!check.diverged(report, linearSolver, reason)) return true;
+  return monitor.report(mop, DivergenceKind::linearSolve, step, reason,
+                        mop.describeWorstVertex(solution, "solution"), "maxLinearResidual");
 }
 
 }  // namespace stroma

@@ -1,0 +1,250 @@
+// SPDX-License-Identifier: MIT
+// Divergence detection at run time (DivergenceMonitor.h): each kind is found on a scene made to
+// diverge, and reported with the step, the solver and the worst vertex. With
+// onDivergence="stop" it is an error (the step fails, `stroma run` exits with 1); with "warn" a
+// single warning and the run goes on. A run that does not diverge reports nothing.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "SolverTestSupport.h"
+
+namespace stroma::test {
+namespace {
+
+struct Diverging {
+  std::string name;
+  std::string xml;     ///< the scene, with MODE where onDivergence goes
+  int steps;           ///< the step where the divergence is found
+  std::string kind;    ///< "divergence (...) at step N"
+  std::string vertex;  ///< "worst vertex: vertex I of /root/Body/dofs"
+  std::string field;
+};
+
+std::string withMode(const std::string& xml, const std::string& mode) {
+  std::string text = xml;
+  for (std::size_t at = text.find("MODE"); at != std::string::npos; at = text.find("MODE", at))
+    text.replace(at, 4, mode);
+  return text;
+}
+
+// Points 0..5 along x, each on an anchor spring, neighbours joined by stiff springs; point 5
+// starts 0.1 m off along y.
+std::string chainScene(const std::string& solvers, const std::string& anchorExtra = "",
+                       double dt = 0.1) {
+  std::ostringstream xml;
+  xml << R"(<Node name="root" dt=")" << dt << R"(" gravity="0 0 0"><Node name="Body">)" << solvers
+      << R"(
+    <MechanicalObject name="dofs" position="0 0 0  1 0 0  2 0 0  3 0 0  4 0 0  5 0.1 0"
+                      rest_position="0 0 0  1 0 0  2 0 0  3 0 0  4 0 0  5 0 0"/>
+    <UniformMass name="mass" vertexMass="1"/>
+    <TestAnchorForceField name="anchor" stiffness="100 100 100" )"
+      << anchorExtra << R"(/>
+    <TestSpringForceField name="springs" springs="0 1 1 2 2 3 3 4 4 5" stiffness="1e4"/>
+  </Node></Node>)";
+  return xml.str();
+}
+
+std::vector<Diverging> divergingScenes() {
+  return {
+      // Forward Euler on undamped oscillators is above its bound at any dt: the energy doubles
+      // each step at omega h = 1, 1024 times per window of 10 steps; the fourth window ends at
+      // step 40. The state then is 2^20 times the initial one (eight steps turn it once): the
+      // largest velocity is point 1's.
+      {"EnergyGrowth",
+       oscillatorScene(
+           R"(<EulerExplicitSolver name="ode" symplectic="false" onDivergence="MODE"/>)", 100, 1.0,
+           "1 0 0  0 2 0", "0 0 0  0 0 5", 0.1),
+       40, "divergence (energy growth) at step 40, time 4 s",
+       "worst vertex: vertex 1 of /root/Body/dofs", "energyGrowth"},
+      // One CG iteration on the stiff chain: far from the solution.
+      {"LinearSolve", chainScene(R"(<EulerImplicitSolver name="ode" onDivergence="MODE"/>
+                     <CGLinearSolver name="cg" iterations="1" tolerance="1e-12"/>)"),
+       1,
+       "divergence (unconverged linear solve) at step 1, time 0.1 s: the linear solver "
+       "/root/Body/cg stopped after 1 iterations",
+       "worst vertex: vertex ", "maxLinearResidual"},
+      // A tangent of the wrong sign: every Newton direction raises the residual.
+      {"StaticNewtonStall",
+       chainScene(R"(<StaticSolver name="ode" newton_iterations="5" onDivergence="MODE"/>
+                     <SparseLDLSolver/>)",
+                  R"(tangentScale="-1")"),
+       1,
+       "divergence (stalled Newton iteration) at step 1, time 0.1 s: no step along the Newton "
+       "direction",
+       "worst vertex: vertex ", "maxNbIterationsLineSearch"},
+      {"ImplicitEulerNewtonStall",
+       chainScene(R"(<EulerImplicitSolver name="ode" newtonIterations="5" onDivergence="MODE"/>
+                     <SparseLDLSolver/>)",
+                  R"(tangentScale="-1")", 1.0),
+       1,
+       "divergence (stalled Newton iteration) at step 1, time 1 s: Newton stopped after 5 linear "
+       "solves",
+       "worst vertex: vertex ", "newtonIterations"},
+  };
+}
+
+std::string caseName(const testing::TestParamInfo<Diverging>& info) { return info.param.name; }
+void PrintTo(const Diverging& d, std::ostream* out) { *out << d.name; }
+
+class DivergenceKinds : public testing::TestWithParam<Diverging> {};
+
+TEST_P(DivergenceKinds, StopModeStopsWithTheStepTheSolverAndTheWorstVertex) {
+  const Diverging& d = GetParam();
+  SolverScene s(withMode(d.xml, "stop"));
+  ASSERT_TRUE(s.loaded()) << s.log();
+  for (int n = 1; n < d.steps; ++n) ASSERT_TRUE(s.step()) << "step " << n << "\n" << s.log();
+  EXPECT_FALSE(s.step()) << s.log();
+  const Message m = findError(s.scene().log(), "divergence (");
+  EXPECT_NE(m.text.find(d.kind), std::string::npos) << m.text;
+  EXPECT_NE(m.text.find(d.vertex), std::string::npos) << m.text;
+  EXPECT_NE(m.text.find("The run stops"), std::string::npos) << m.text;
+  EXPECT_EQ(m.componentPath, "/root/Body/ode");
+  EXPECT_EQ(m.field, d.field);
+}
+
+TEST_P(DivergenceKinds, WarnModeWarnsOnceAndGoesOn) {
+  const Diverging& d = GetParam();
+  SolverScene s(withMode(d.xml, "warn"));
+  ASSERT_TRUE(s.loaded()) << s.log();
+  for (int n = 1; n <= d.steps + 1; ++n) ASSERT_TRUE(s.step()) << "step " << n << "\n" << s.log();
+  int found = 0;
+  for (const Message& m : s.scene().log().messages()) {
+    EXPECT_NE(m.level, MessageLevel::error) << m.text;
+    if (m.text.find("divergence (") == std::string::npos) continue;
+    ++found;
+    EXPECT_EQ(m.level, MessageLevel::warning);
+    EXPECT_NE(m.text.find(d.kind), std::string::npos) << m.text;
+    EXPECT_NE(m.text.find(d.vertex), std::string::npos) << m.text;
+    EXPECT_NE(m.text.find("The run goes on"), std::string::npos) << m.text;
+  }
+  EXPECT_EQ(found, 1) << s.log();
+}
+
+INSTANTIATE_TEST_SUITE_P(ODESolver, DivergenceKinds, testing::ValuesIn(divergingScenes()),
+                         caseName);
+
+TEST(DivergenceMonitor, ABoundedRunReportsNothing) {
+  // Symplectic Euler below its bound (0.2 s), implicit Euler with CG, static Newton: no report.
+  for (
+      const std::string solvers :
+      {R"(<EulerExplicitSolver name="ode" onDivergence="stop"/>)",
+       R"(<EulerImplicitSolver name="ode" onDivergence="stop"/><CGLinearSolver iterations="100" tolerance="1e-10" threshold="1e-30"/>)",
+       R"(<StaticSolver name="ode" newton_iterations="5" onDivergence="stop"/><SparseLDLSolver/>)"}) {
+    SCOPED_TRACE(solvers);
+    SolverScene s(oscillatorScene(solvers, 100, 1.0, "1 0 0  0 2 0", "0 0 0  3 0 0", 0.05));
+    ASSERT_TRUE(s.loaded()) << s.log();
+    for (int n = 0; n < 60; ++n) ASSERT_TRUE(s.step()) << s.log();
+    EXPECT_EQ(s.scene().log().count(MessageLevel::warning), 0u) << s.log();
+  }
+}
+
+TEST(DivergenceMonitor, AnExplicitSolverInStopModeRefusesATimeStepAboveItsBound) {
+  // omega = 10 rad/s: central differences are stable for dt < 0.2 s.
+  SolverScene s(oscillatorScene(R"(<CentralDifferenceSolver name="ode" onDivergence="stop"/>)", 100,
+                                1.0, "1 0 0", "0 0 0", 0.25));
+  ASSERT_TRUE(s.loaded()) << s.log();
+  EXPECT_FALSE(s.step());
+  const Message m = findError(s.scene().log(), "divergence (time step above the stability bound)");
+  EXPECT_NE(m.text.find("at step 1"), std::string::npos) << m.text;
+  EXPECT_NE(m.text.find("dt = 0.25 s is above the stability bound of central differences, 0.2 s"),
+            std::string::npos)
+      << m.text;
+  EXPECT_NE(m.text.find("worst vertex: vertex 0 of /root/Body/dofs (|highest mode|"),
+            std::string::npos)
+      << m.text;
+  EXPECT_EQ(m.field, "dt");
+  EXPECT_EQ(s.position(0), Vec3d(1, 0, 0));  // refused before anything moved
+  s.step();  // a solver that reported an error is off for the rest of the run
+  EXPECT_EQ(s.position(0), Vec3d(1, 0, 0));
+}
+
+TEST(DivergenceMonitor, EnergyGrowthIsNotTakenForAnImpactOrALoad) {
+  // Implicit Euler: a stiff chain hit at its end (point 5 moved 0.1 m at once): the kinetic
+  // energy jumps and decays, it never grows three windows in a row.
+  SolverScene s(chainScene(R"(<EulerImplicitSolver name="ode" onDivergence="stop"/>
+                              <SparseLDLSolver/>)",
+                           "", 0.01));
+  ASSERT_TRUE(s.loaded()) << s.log();
+  for (int n = 0; n < 100; ++n) ASSERT_TRUE(s.step()) << s.log();
+  // Symplectic Euler under gravity from rest: T grows like t^2, below the criterion.
+  SolverScene fall(R"(<Node name="root" dt="0.01" gravity="0 -9.81 0"><Node name="Body">
+    <EulerExplicitSolver name="ode" onDivergence="stop"/>
+    <MechanicalObject name="dofs" position="0 0 0  1 0 0"/>
+    <UniformMass vertexMass="1"/></Node></Node>)");
+  ASSERT_TRUE(fall.loaded()) << fall.log();
+  for (int n = 0; n < 200; ++n) ASSERT_TRUE(fall.step()) << fall.log();
+  EXPECT_EQ(fall.scene().log().count(MessageLevel::warning), 0u) << fall.log();
+}
+
+// `stroma run` on real components: exit code 1 in stop mode, 0 with a warning in warn mode.
+int runCli(const std::string& xml, int steps, std::string& output) {
+  TempDir dir;
+  const auto scene = dir.write("scene.scn", xml);
+  const auto log = dir.path() / "log.txt";
+  const std::string command = std::string("\"") + STROMA_CLI + "\" run \"" + scene.string() +
+                              "\" -n " + std::to_string(steps) + " > \"" + log.string() + "\" 2>&1";
+  const int status = std::system(command.c_str());
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  output = text.str();
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// A chain of 6 points on springs, point 0 fixed, point 5 pulled 0.1 m off at the start.
+std::string springChain(const std::string& solvers, double dt) {
+  return R"(<Node name="root" dt=")" + std::to_string(dt) + R"(" gravity="0 0 0">
+  <Node name="Body">
+    )" + solvers +
+         R"(
+    <MechanicalObject name="dofs" position="0 0 0  1 0 0  2 0 0  3 0 0  4 0 0  5 0.1 0"
+                      rest_position="0 0 0  1 0 0  2 0 0  3 0 0  4 0 0  5 0 0"/>
+    <UniformMass vertexMass="1"/>
+    <SpringForceField spring="0 1 1e4 0 1  1 2 1e4 0 1  2 3 1e4 0 1  3 4 1e4 0 1  4 5 1e4 0 1"/>
+    <FixedConstraint indices="0"/>
+  </Node>
+</Node>)";
+}
+
+TEST(StromaRun, ExitsWith1OnADivergenceInStopModeAnd0WithAWarningInWarnMode) {
+  struct CliCase {
+    std::string solvers, kind;
+    double dt;
+    int steps;
+  };
+  for (const CliCase& c :
+       {CliCase{R"(<EulerExplicitSolver symplectic="false" onDivergence="MODE"/>)",
+                "divergence (energy growth) at step", 0.01, 60},
+        CliCase{R"(<EulerImplicitSolver onDivergence="MODE"/><CGLinearSolver iterations="1"/>)",
+                "divergence (unconverged linear solve) at step 1", 0.1, 3}}) {
+    SCOPED_TRACE(c.kind);
+    std::string output;
+    EXPECT_EQ(runCli(withMode(springChain(c.solvers, c.dt), "stop"), c.steps, output), 1) << output;
+    EXPECT_NE(output.find("error: /root/Body/"), std::string::npos) << output;
+    EXPECT_NE(output.find(c.kind), std::string::npos) << output;
+    EXPECT_NE(output.find("worst vertex: vertex "), std::string::npos) << output;
+    EXPECT_EQ(runCli(withMode(springChain(c.solvers, c.dt), "warn"), c.steps, output), 0) << output;
+    EXPECT_NE(output.find("warning: /root/Body/"), std::string::npos) << output;
+    EXPECT_NE(output.find(c.kind), std::string::npos) << output;
+    EXPECT_EQ(output.find("error:"), std::string::npos) << output;
+  }
+}
+
+TEST(StromaRun, ExitsWith1OnNonFiniteValuesInBothModes) {
+  // Central differences at 100 times their bound, allowed to run in warn mode: the state
+  // overflows; non-finite values stop the run whatever onDivergence says.
+  std::string output;
+  EXPECT_EQ(
+      runCli(springChain(R"(<CentralDifferenceSolver onDivergence="warn" energyGrowth="0"/>)", 2.0),
+             400, output),
+      1)
+      << output;
+  EXPECT_NE(output.find("of /root/Body/dofs is not finite at index "), std::string::npos) << output;
+}
+
+}  // namespace
+}  // namespace stroma::test
