@@ -37,6 +37,7 @@ bool readReal(const Arguments& a, const std::string& option, double& value, std:
 
 int runCommand(const std::vector<std::string>& args);
 int checkCommand(const std::vector<std::string>& args);
+int stabilityCommand(const std::vector<std::string>& args);  ///< StabilityCommand.cpp
 int listCommand(const std::vector<std::string>& args);
 int docCommand(const std::vector<std::string>& args);
 int pluginIndexCommand(const std::vector<std::string>& args);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// `stroma run` and `stroma check`.
+// `stroma run` and `stroma check` (`check --stability` is StabilityCommand.cpp).
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -124,6 +125,8 @@ int runCommand(const std::vector<std::string>& args) {
 }
 
 int checkCommand(const std::vector<std::string>& args) {
+  if (std::find(args.begin(), args.end(), "--stability") != args.end())
+    return stabilityCommand(args);
   Arguments a;
   std::string error;
   if (!parseArguments(args, kSceneOptions, {"--verbose"}, a, error)) return usageError(error);
