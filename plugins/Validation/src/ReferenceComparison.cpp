@@ -506,7 +506,9 @@ void ReferenceComparison::doUpdate() {
   const double time = node()->time();
   const std::vector<double>& times = d_times.value();
   if (times.empty()) {
-    if (m_history.empty() || m_history.back().time != time) compareNow(time);
+    // The state may have changed since a comparison at this same time: that one is replaced.
+    if (!m_history.empty() && m_history.back().time == time) m_history.pop_back();
+    compareNow(time);
     return;
   }
   for (std::size_t k = 0; k < times.size(); ++k)
