@@ -36,6 +36,7 @@
 #include "SolidMechanics/kernels/CorotationalHexahedron.h"
 #include "SolidMechanics/kernels/CorotationalTetrahedron.h"
 #include "SolidMechanics/kernels/IsotropicMaterial.h"
+#include "SolidMechanics/kernels/VolumetricSplit.h"
 #include "core/ThreadPool.h"
 #include "core/Types.h"
 #include "linalg/AssembledMatrix.h"
@@ -115,6 +116,12 @@ class CorotationalElements {
   /// The rotation of each element at the positions of the last addForce (or updateRotations).
   const std::vector<Eigen::Matrix3d>& rotations() const { return m_rotations; }
 
+  /// How the volumetric energy enters Ke (VolumetricSplit.h): full by default; meanDilatation
+  /// for hexahedra only; deviatoric when a mesh-level term adds it (AveragedNodalPressure.h).
+  /// Takes effect at the next computeConstants.
+  void setVolumetricStiffness(fem::VolumetricStiffness volumetric) { m_volumetric = volumetric; }
+  fem::VolumetricStiffness volumetricStiffness() const { return m_volumetric; }
+
   /// Computes every element's constants from the rest positions, the Young modulus (one value,
   /// or one per element) and Poisson's ratio (both valid: checked by the caller). Degenerate
   /// elements get Ke = 0 and are listed. No allocation besides the report.
@@ -122,27 +129,33 @@ class CorotationalElements {
                                    std::span<const double> youngModulus, double poissonRatio,
                                    const ThreadPool& pool) {
     const bool uniform = youngModulus.size() == 1;
-    const fem::Matrix6d uniformC =
-        fem::computeElasticityMatrix(fem::computeLameParameters(youngModulus[0], poissonRatio));
-    if constexpr (N == 4) {
-      // C(E) = E C(1) for one Poisson ratio: G carries sqrt(E_e |V_e|).
-      m_unitElasticity =
-          fem::computeElasticityMatrix(fem::computeLameParameters(1.0, poissonRatio));
-    }
+    // The elements' own C: all of it, or its deviatoric part (VolumetricSplit.h).
+    const auto elasticity = [this, poissonRatio](double E) {
+      const fem::LameParameters lame = fem::computeLameParameters(E, poissonRatio);
+      return m_volumetric == fem::VolumetricStiffness::full
+                 ? fem::computeElasticityMatrix(lame)
+                 : fem::computeDeviatoricElasticityMatrix(lame);
+    };
+    const fem::Matrix6d uniformC = elasticity(youngModulus[0]);
+    // C(E) = E C(1) for one Poisson ratio: G carries sqrt(E_e |V_e|).
+    if constexpr (N == 4) m_unitElasticity = elasticity(1.0);
     std::vector<char>& degenerate = m_degenerate;
     degenerate.assign(size(), 0);
     pool.parallelFor(size(), kGrain, [&](std::size_t begin, std::size_t end) {
       for (std::size_t e = begin; e < end; ++e) {
-        const fem::Matrix6d C = uniform ? uniformC
-                                        : fem::computeElasticityMatrix(fem::computeLameParameters(
-                                              youngModulus[e], poissonRatio));
+        const double E = youngModulus[uniform ? 0 : e];
+        const fem::Matrix6d C = uniform ? uniformC : elasticity(E);
         const Vectors X = gather(rest, e);
         Element& element = m_constants[e];
         fem::ElementStatus status;
-        if constexpr (N == 4)
+        if constexpr (N == 4) {
           status = fem::computeCorotationalTetrahedron(X, C, element);
-        else
+        } else {
           status = fem::computeCorotationalHexahedron(X, C, element);
+          if (status == fem::ElementStatus::ok &&
+              m_volumetric == fem::VolumetricStiffness::meanDilatation)
+            status = addMeanDilatation(X, fem::computeLameParameters(E, poissonRatio), element);
+        }
         if (status != fem::ElementStatus::ok) {
           // Left out of the mechanics: zero stiffness, rest shape kept for the rotations.
           element = Element{};
@@ -150,8 +163,7 @@ class CorotationalElements {
           degenerate[e] = 1;
         }
         if constexpr (N == 4)
-          m_stiffnessFactors[e] = fem::computeStiffnessFactor(
-              element, degenerate[e] ? 0.0 : youngModulus[uniform ? 0 : e]);
+          m_stiffnessFactors[e] = fem::computeStiffnessFactor(element, degenerate[e] ? 0.0 : E);
       }
     });
     RestShapeReport report;
@@ -271,6 +283,18 @@ class CorotationalElements {
   }
 
  private:
+  /// Ke += kappa V bbar bbar^T on a hexahedron whose Ke was computed with C_dev.
+  static fem::ElementStatus addMeanDilatation(const Vectors& X, const fem::LameParameters& lame,
+                                              Element& element) {
+    Vectors meanGradients;
+    double volume = 0;
+    if (fem::computeHexahedronMeanGradients(X, meanGradients, volume) != fem::ElementStatus::ok)
+      return fem::ElementStatus::degenerate;
+    fem::addMeanDilatationStiffness<N>(meanGradients, volume, fem::computeBulkModulus(lame),
+                                       element.stiffness);
+    return fem::ElementStatus::ok;
+  }
+
   /// Vertex -> corners (e * N + local), by a counting sort: increasing element order.
   void buildVertexAdjacency(std::size_t pointCount) {
     m_vertexOffsets.assign(pointCount + 1, 0);
@@ -347,6 +371,7 @@ class CorotationalElements {
   // Tetrahedra: Ke = B(G_e)^T C B(G_e) with G_e = sqrt(E_e |V_e|) grad N and C = C(E = 1).
   std::vector<fem::TetrahedronRows> m_stiffnessFactors;  // (elements) G_e, by rows
   fem::Matrix6d m_unitElasticity = fem::Matrix6d::Zero();
+  fem::VolumetricStiffness m_volumetric = fem::VolumetricStiffness::full;
 };
 
 }  // namespace stroma

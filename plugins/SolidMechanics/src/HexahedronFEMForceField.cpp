@@ -7,6 +7,7 @@ namespace stroma {
 
 void HexahedronFEMForceField::init() {
   ForceField<Vec3Types>::init();
+  m_model.elements().setVolumetricStiffness(toVolumetricStiffness(d_volumetricIntegration.value()));
   if (!m_model.init(mstate(), rotationMethod())) setInvalid();
 }
 

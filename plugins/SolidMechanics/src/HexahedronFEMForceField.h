@@ -6,6 +6,7 @@
 
 #include "CorotationalFemModel.h"
 #include "FemMethod.h"
+#include "VolumetricIntegration.h"
 #include "core/StateTypes.h"
 #include "simulation/ForceField.h"
 #include "topology/Topology.h"
@@ -44,6 +45,12 @@ class HexahedronFEMForceField final : public ForceField<Vec3Types> {
       "when inverted), svd (SVD of F at the centre; not in SOFA); qr is large, polar2 polar."};
   Link<Topology> l_topology{this, "topology",
                             "Topology holding the hexahedra (default: the node's or above)."};
+  Data<HexahedronVolumetricIntegration> d_volumetricIntegration{
+      this, "volumetricIntegration", HexahedronVolumetricIntegration::full,
+      "Where the volumetric energy kappa (tr eps)^2 / 2 is integrated: full (2 x 2 x 2 Gauss "
+      "points: locks as poissonRatio nears 0.5) or reduced (one volumetric strain per "
+      "element, its mean dilatation, with the deviatoric part at 2 x 2 x 2 points: selective "
+      "reduced integration in B-bar form, locking-free; any method). Read at init."};
   Data<bool> d_updateStiffnessMatrix{
       this, "updateStiffnessMatrix", false,
       "SOFA option, accepted: the element stiffness is recomputed whenever youngModulus or "

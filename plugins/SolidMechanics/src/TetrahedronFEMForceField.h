@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "AveragedNodalPressure.h"
 #include "CorotationalFemModel.h"
 #include "FemMethod.h"
+#include "VolumetricIntegration.h"
 #include "core/StateTypes.h"
 #include "simulation/ForceField.h"
 #include "topology/Topology.h"
@@ -50,6 +54,12 @@ class TetrahedronFEMForceField final : public ForceField<Vec3Types> {
       "polar."};
   Link<Topology> l_topology{this, "topology",
                             "Topology holding the tetrahedra (default: the node's or above)."};
+  Data<TetrahedronVolumetricIntegration> d_volumetricIntegration{
+      this, "volumetricIntegration", TetrahedronVolumetricIntegration::full,
+      "Where the volumetric energy kappa (tr eps)^2 / 2 is integrated: full (in each "
+      "tetrahedron: locks as poissonRatio nears 0.5) or nodal (one volumetric strain per "
+      "vertex, the volume-weighted mean of the tetrahedra around it: Bonet and Burton's "
+      "averaged nodal pressure, locking-free; any method). Read at init."};
 
   // SOFA's options about how K is applied: Stroma assembles K exactly when the solver asks for
   // a matrix, and recomputes the element constants when the material changes.
@@ -131,12 +141,28 @@ class TetrahedronFEMForceField final : public ForceField<Vec3Types> {
   }
   /// The topology the tetrahedra come from (after init).
   const Topology* topology() const { return m_model.topology(); }
+  /// The nodal pressures p_a (Pa) of the last addForce with volumetricIntegration="nodal"
+  /// (empty otherwise).
+  std::span<const double> nodalPressure() const {
+    return usesNodalPressure() ? m_pressure.nodalPressure() : std::span<const double>{};
+  }
 
  private:
   fem::RotationMethod rotationMethod() const { return toRotationMethod(d_method.value()); }
+  bool usesNodalPressure() const {
+    return d_volumetricIntegration.value() == TetrahedronVolumetricIntegration::nodal;
+  }
+  /// Sets the nodal pressure up again when the elements or the material changed (after
+  /// m_model.refresh, which applies only a valid material).
+  void refreshNodalPressure();
 
   CorotationalFemModel<fem::CorotationalTetrahedron> m_model{*this, d_youngModulus, d_poissonRatio,
                                                              l_topology};
+  // volumetricIntegration="nodal": the volumetric part, and what it was set up from.
+  AveragedNodalPressure m_pressure;
+  std::uint64_t m_pressureElementsRevision = 0;
+  std::uint64_t m_pressureYoungModulusVersion = 0;
+  std::uint64_t m_pressurePoissonRatioVersion = 0;
 };
 
 }  // namespace stroma
