@@ -13,6 +13,9 @@
 
 #include "Validation/kernels/AffinePatch.h"
 #include "Validation/kernels/CantileverBeam.h"
+#include "Validation/kernels/CylinderTorsion.h"
+#include "Validation/kernels/LameCylinder.h"
+#include "Validation/kernels/UniaxialStretch.h"
 #include "plugins/SolidMechanics/FemTestScenes.h"
 #include "simulation/AnimationLoop.h"
 #include "simulation/StateFile.h"
@@ -270,6 +273,91 @@ TEST(ReferenceComparison, UniaxialBlockIsExactAtEveryResolution) {
                 1e-9)
           << material << " " << k;
   }
+}
+
+// --- Each analytic field, with its origin and axis ------------------------------------------
+
+/// The comparison of `attributes` on a box whose positions are rest + `displacement`: returns
+/// maxErrorAbsolute, and in `atRest` the same for the undeformed box.
+template <class Field>
+double analyticError(const std::string& attributes, Field displacement, double& atRest) {
+  FemMesh mesh = makeBoxMesh(Vec3d(1, 0.2, 0.2), Vec3i(4, 2, 2));
+  for (Vec3d& p : mesh.points) p += Vec3d(0.3, -0.4, 0.5);
+  std::vector<Vec3d> moved = mesh.points;
+  for (Vec3d& p : moved) p += displacement(p);
+  const std::string compare =
+      "<ReferenceComparison name=\"compare\" referenceLength=\"1\" " + attributes + "/>";
+  double error = NAN;
+  for (bool deformed : {false, true}) {
+    Runtime runtime;
+    Scene scene(runtime);
+    if (!loadQuietly(scene, bodyScene(mesh, "hexahedra", deformed ? moved : mesh.points, compare)))
+      return NAN;
+    (deformed ? error : atRest) = number(scene, "maxErrorAbsolute");
+  }
+  return error;
+}
+
+TEST(ReferenceComparison, AnalyticFieldsFollowTheirOriginAndAxis) {
+  const Vec3d origin(0.3, -0.3, 0.6), axis(1, 0, 0), down(0, 0, -1);
+  double atRest = 0;
+  // Cantilever curve: only the deflection along loadDirection counts (the axial motion of
+  // the sections is not compared).
+  reference::CantileverBeam beam;
+  beam.tipForce = 100;
+  const auto curve = [&](const Vec3d& X) -> Vec3d {
+    return beam.deflection((X - origin).dot(axis)) * down + Vec3d(1e-3, 0, 0);
+  };
+  EXPECT_LT(analyticError("analytic=\"cantileverCurve\" origin=\"0.3 -0.3 0.6\" "
+                          "loadDirection=\"0 0 -1\" tipForce=\"100\" youngModulus=\"1e8\"",
+                          curve, atRest),
+            1e-15);
+  EXPECT_NEAR(atRest, beam.tipDeflection(), 1e-15);
+  // Torsion about the x axis through origin.
+  reference::CylinderTorsion twist;
+  twist.torque = 20;
+  const auto torsion = [&](const Vec3d& X) -> Vec3d { return twist.displacement(X, origin, axis); };
+  EXPECT_LT(
+      analyticError("analytic=\"torsion\" origin=\"0.3 -0.3 0.6\" torque=\"20\"", torsion, atRest),
+      1e-15);
+  EXPECT_GT(atRest, 1e-3);
+  // Lame cylinder around the x axis through origin (evaluated wherever the points are).
+  reference::LameCylinder lame;
+  lame.innerRadius = 0.05;
+  lame.outerRadius = 0.5;
+  lame.pressure = 1e4;
+  lame.youngModulus = 1e6;
+  lame.poissonRatio = 0.45;
+  const auto lameField = [&](const Vec3d& X) -> Vec3d {
+    const Vec3d d = X - origin, radial = d - d.dot(axis) * axis;
+    return lame.radialDisplacement(radial.norm()) / radial.norm() * radial;
+  };
+  EXPECT_LT(analyticError("analytic=\"lame\" origin=\"0.3 -0.3 0.6\" innerRadius=\"0.05\" "
+                          "outerRadius=\"0.5\" pressure=\"1e4\" youngModulus=\"1e6\" "
+                          "poissonRatio=\"0.45\"",
+                          lameField, atRest),
+            1e-15);
+  EXPECT_GT(atRest, 1e-3);
+  // Neo-Hookean block stretched 30 % along z about origin.
+  reference::UniaxialStretch block;
+  block.material = reference::UniaxialMaterial::neoHookean;
+  block.youngModulus = 1e4;
+  block.poissonRatio = 0.45;
+  const auto stretched = [&](const Vec3d& X) -> Vec3d {
+    return block.displacement(X, origin, Vec3d(0, 0, 1), 1.3);
+  };
+  EXPECT_LT(analyticError("analytic=\"uniaxialBlock\" origin=\"0.3 -0.3 0.6\" axis=\"0 0 2\" "
+                          "material=\"NeoHookean\" stretch=\"1.3\" youngModulus=\"1e4\" "
+                          "poissonRatio=\"0.45\"",
+                          stretched, atRest),
+            1e-15);
+  // The same block given by its nominal stress instead of its stretch.
+  EXPECT_LT(analyticError("analytic=\"uniaxialBlock\" origin=\"0.3 -0.3 0.6\" axis=\"0 0 1\" "
+                          "material=\"NeoHookean\" nominalStress=\"" +
+                              std::to_string(block.nominalStress(1.3)) +
+                              "\" youngModulus=\"1e4\" poissonRatio=\"0.45\"",
+                          stretched, atRest),
+            1e-9);
 }
 
 }  // namespace
