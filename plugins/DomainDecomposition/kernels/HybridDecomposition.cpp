@@ -63,7 +63,11 @@ bool HybridDecomposition::setup(const ElasticProblem& problem,
   for (std::size_t i = 0; i < loads.forceNodes.size(); ++i)
     m_f.segment<3>(3 * loads.forceNodes[i]) += loads.forces[i];
   m_imposed.assign(n, 0);
-  for (int p : loads.imposedNodes) m_imposed[p] = 1;
+  m_imposedValue.assign(n, Vec3::Zero());
+  for (std::size_t i = 0; i < loads.imposedNodes.size(); ++i) {
+    m_imposed[loads.imposedNodes[i]] = 1;
+    m_imposedValue[loads.imposedNodes[i]] = loads.imposedDisplacements[i];
+  }
   if (!checkSingularGroups(error)) return false;
   m_condensed.reset();
   if (options.iteration == InterfaceIteration::schur) {
@@ -293,6 +297,9 @@ bool HybridDecomposition::setLoads(const Loads& loads, std::string& error) {
   for (int p : loads.imposedNodes) imposed[p] = 1;
   const bool imposedSetChanged = imposed != m_imposed;
   m_imposed = imposed;
+  m_imposedValue.assign(n, Vec3::Zero());
+  for (std::size_t i = 0; i < loads.imposedNodes.size(); ++i)
+    m_imposedValue[loads.imposedNodes[i]] = loads.imposedDisplacements[i];
   if (!checkSingularGroups(error)) return false;
   m_loads = loads;
   m_f.setZero();
@@ -398,7 +405,7 @@ void HybridDecomposition::updatePrecomputed(Zone& zone, Eigen::VectorXd& u) {
     const int global = zone.nodes[basisNodes[b]];
     if (m_imposed[global]) {
       imposedNodes.push_back(basisNodes[b]);
-      imposed.push_back(u.segment<3>(3 * global));
+      imposed.push_back(m_imposedValue[global]);  // not u's copy: no round-off drift
       continue;
     }
     Vec3 f = m_f.segment<3>(3 * global);

@@ -84,8 +84,8 @@ struct Loads {
 struct DecompositionOptions {
   InterfaceIteration iteration = InterfaceIteration::gaussSeidel;
   TensorMassSolve tensorMassSolve = TensorMassSolve::direct;
-  int relaxationSteps = 1;         ///< explicit steps per interface iteration (relaxation)
-  double relaxationDamping = 0.1;  ///< fraction of the velocity removed at each step, in [0, 1)
+  int relaxationSteps = 1;          ///< explicit steps per interface iteration (relaxation)
+  double relaxationDamping = 0.02;  ///< fraction of the velocity removed at each step, in [0, 1)
 };
 
 /// How far an iterate is from convergence.
@@ -184,6 +184,7 @@ class HybridDecomposition {
   Eigen::VectorXd m_f;                             ///< external forces (3 n)
   Eigen::VectorXd m_u, m_work;                     ///< iterate; scratch of the Jacobi updates
   std::vector<char> m_fixed, m_imposed, m_active;  ///< per node
+  std::vector<Vec3> m_imposedValue;                ///< per node (m)
   std::vector<int> m_owner;                        ///< per node: lowest zone holding it (Jacobi)
   std::vector<int> m_allInterfaceNodes;
   Loads m_loads;

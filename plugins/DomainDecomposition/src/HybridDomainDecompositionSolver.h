@@ -103,8 +103,9 @@ class HybridDomainDecompositionSolver final : public OdeSolver {
                               {.min = 1.0, .max = 100000.0}};
   Data<double> d_relaxationDamping{this,
                                    "relaxationDamping",
-                                   0.1,
-                                   "Fraction of the velocity a relaxation step removes.",
+                                   0.02,
+                                   "Fraction of the velocity a relaxation step removes (0.02: "
+                                   "the fastest of 0.01, 0.02, 0.03 and 0.1 on the bar).",
                                    {.min = 0.0, .max = 0.999}};
   Data<std::string> d_convergenceReport{
       this, "convergenceReport", "",
