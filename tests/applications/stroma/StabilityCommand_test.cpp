@@ -121,7 +121,7 @@ TEST(StabilitySuite, ExplicitSolversRefuseATimeStepAboveTheirBound) {
       continue;
     const std::string& bound = row.at("critical_dt_s");
     ASSERT_FALSE(bound.empty()) << describe(row);  // estimated before the run
-    const double dt = row.at("case") == "dt" ? std::stod(row.at("value")) : 1e-3;  // baseline
+    const double dt = row.at("case") == "dt" ? std::stod(row.at("value")) : 1e-4;  // baseline
     if (dt > std::stod(bound)) {
       ++above;
       EXPECT_EQ(row.at("status"), "refused") << describe(row);

@@ -234,6 +234,33 @@ TEST(StromaRun, ExitsWith1OnADivergenceInStopModeAnd0WithAWarningInWarnMode) {
   }
 }
 
+TEST(StromaRun, ExitsWith1WhenStaticNewtonStallsInStopMode) {
+  // A very soft corotational beam (E = 100 Pa) hanging under its weight, in one load step: the
+  // corotational tangent leaves out the rotations' derivative, and at this deformation no step
+  // along its Newton direction lowers the residual (the stability suite's case).
+  const std::string beam = R"(<Node name="root" dt="0.001" gravity="0 -9.81 0">
+  <Node name="Beam">
+    <StaticSolver newton_iterations="20" onDivergence="MODE"/>
+    <SparseLDLSolver/>
+    <RegularGridTopology name="grid" min="0 0 0" max="0.1 0.05 0.05" n="5 2 2"/>
+    <MechanicalObject name="dofs"/>
+    <UniformMass totalMass="0.25"/>
+    <HexahedronFEMForceField method="large" youngModulus="100" poissonRatio="0.3"/>
+    <FixedConstraint indices="0 5 10 15"/>
+  </Node>
+</Node>)";
+  std::string output;
+  EXPECT_EQ(runCli(withMode(beam, "stop"), 3, output), 1) << output;
+  EXPECT_NE(output.find("error: /root/Beam/"), std::string::npos) << output;
+  EXPECT_NE(output.find("divergence (stalled Newton iteration) at step 1"), std::string::npos)
+      << output;
+  EXPECT_NE(output.find("worst vertex: vertex "), std::string::npos) << output;
+  EXPECT_EQ(runCli(withMode(beam, "warn"), 3, output), 0) << output;
+  EXPECT_NE(output.find("divergence (stalled Newton iteration) at step 1"), std::string::npos)
+      << output;
+  EXPECT_EQ(output.find("error:"), std::string::npos) << output;
+}
+
 TEST(StromaRun, ExitsWith1OnNonFiniteValuesInBothModes) {
   // Central differences at 100 times their bound, allowed to run in warn mode: the state
   // overflows; non-finite values stop the run whatever onDivergence says.
