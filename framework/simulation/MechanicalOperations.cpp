@@ -218,6 +218,14 @@ class ProjectedAccumulator final : public MatrixAccumulator {
   void add(std::size_t row, std::size_t col, double value) override {
     if (!m_fixed[row] && !m_fixed[col]) m_target.add(row, col, value);
   }
+  // A block with no fixed row or column goes through whole (one call instead of 9).
+  void addBlock(std::size_t row, std::size_t col, const Eigen::Matrix3d& block) override {
+    if (m_fixed[row] | m_fixed[row + 1] | m_fixed[row + 2] | m_fixed[col] | m_fixed[col + 1] |
+        m_fixed[col + 2])
+      MatrixAccumulator::addBlock(row, col, block);
+    else
+      m_target.addBlock(row, col, block);
+  }
 
  private:
   MatrixAccumulator& m_target;
