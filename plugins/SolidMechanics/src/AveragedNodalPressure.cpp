@@ -19,8 +19,8 @@ fem::TetrahedronVectors restGradients(const fem::CorotationalTetrahedron& elemen
 
 }  // namespace
 
-void AveragedNodalPressure::setup(Elements& elements, std::span<const double> youngModulus,
-                                  double poissonRatio, const ThreadPool& pool) {
+void AveragedNodalPressure::setup(const Elements& elements, std::span<const double> youngModulus,
+                                  double poissonRatio) {
   const std::size_t count = elements.size(), points = elements.pointCount();
   m_gradients.resize(count);
   m_volume.resize(count);
@@ -33,24 +33,7 @@ void AveragedNodalPressure::setup(Elements& elements, std::span<const double> yo
     m_bulkModulus[e] = fem::computeBulkModulus(
         fem::computeLameParameters(youngModulus[youngModulus.size() == 1 ? 0 : e], poissonRatio));
   }
-  // V_a and kappa_a V_a, by the elements' deterministic vertex sums.
-  m_nodal.assign(points, Vec3d::Zero());
-  elements.accumulate(m_nodal, 1.0, pool,
-                      [this](std::size_t e, Eigen::Map<fem::TetrahedronVectors> corner) {
-                        const double share = m_volume[e] / 4;
-                        corner.row(0).setConstant(share);
-                        corner.row(1).setConstant(share * m_bulkModulus[e]);
-                        corner.row(2).setZero();
-                      });
-  m_nodalVolume.resize(points);
-  m_nodalBulkModulus.resize(points);
-  for (std::size_t a = 0; a < points; ++a) {
-    m_nodalVolume[a] = m_nodal[a].x();
-    m_nodalBulkModulus[a] = m_nodal[a].x() > 0 ? m_nodal[a].y() / m_nodal[a].x() : 0.0;
-  }
-  m_pressure.assign(points, 0.0);
-  m_dPressure.assign(points, 0.0);
-  // Vertex -> tetrahedra, increasing (a counting sort), for the assembled matrix.
+  // Vertex -> tetrahedra, increasing (a counting sort): the order of every vertex sum.
   m_vertexOffsets.assign(points + 1, 0);
   for (const auto& nodes : elements.elements())
     for (Index v : nodes) ++m_vertexOffsets[v + 1];
@@ -59,22 +42,48 @@ void AveragedNodalPressure::setup(Elements& elements, std::span<const double> yo
   std::vector<Index> next(m_vertexOffsets.begin(), m_vertexOffsets.end() - 1);
   for (std::size_t e = 0; e < count; ++e)
     for (Index v : elements.elements()[e]) m_vertexElements[next[v]++] = static_cast<Index>(e);
+  // V_a = sum V_e / 4 and kappa_a = sum (V_e / 4) kappa_e / V_a over the tetrahedra around a.
+  m_nodalVolume.assign(points, 0.0);
+  m_nodalBulkModulus.assign(points, 0.0);
+  for (std::size_t a = 0; a < points; ++a) {
+    double volume = 0, stiffness = 0;
+    for (Index k = m_vertexOffsets[a]; k < m_vertexOffsets[a + 1]; ++k) {
+      const Index e = m_vertexElements[k];
+      volume += m_volume[e] / 4;
+      stiffness += m_volume[e] / 4 * m_bulkModulus[e];
+    }
+    m_nodalVolume[a] = volume;
+    m_nodalBulkModulus[a] = volume > 0 ? stiffness / volume : 0.0;
+  }
+  // The rotated gradients of the current rotations (those of init until the first addForce).
+  m_rotatedGradients.resize(count);
+  for (std::size_t e = 0; e < count; ++e)
+    m_rotatedGradients[e] = elements.rotations()[e] * m_gradients[e];
+  m_share.assign(count, 0.0);
+  m_pressure.assign(points, 0.0);
+  m_dPressure.assign(points, 0.0);
 }
 
 template <class Divergence>
-void AveragedNodalPressure::averagePressure(Elements& elements, std::span<double> pressure,
-                                            const ThreadPool& pool, Divergence&& divergence) {
-  std::fill(m_nodal.begin(), m_nodal.end(), Vec3d::Zero());
-  elements.accumulate(
-      m_nodal, 1.0, pool,
-      [this, &divergence](std::size_t e, Eigen::Map<fem::TetrahedronVectors> corner) {
-        corner.setZero();
-        corner.row(0).setConstant(m_volume[e] / 4 * divergence(e));
+void AveragedNodalPressure::averagePressure(std::span<double> pressure, const ThreadPool& pool,
+                                            Divergence&& divergence) {
+  // (V_e / 4) d_e per tetrahedron, then p_a = kappa_a theta_a = kappa_a (sum (V_e / 4) d_e) / V_a
+  // summed in increasing element order: the same bits for any thread count.
+  pool.parallelFor(m_share.size(), Elements::kProductGrain,
+                   [this, &divergence](std::size_t begin, std::size_t end) {
+                     for (std::size_t e = begin; e < end; ++e)
+                       m_share[e] = m_volume[e] / 4 * divergence(e);
+                   });
+  pool.parallelFor(
+      pressure.size(), Elements::kVertexGrain,
+      [this, &pressure](std::size_t begin, std::size_t end) {
+        for (std::size_t a = begin; a < end; ++a) {
+          double sum = 0;
+          for (Index k = m_vertexOffsets[a]; k < m_vertexOffsets[a + 1]; ++k)
+            sum += m_share[m_vertexElements[k]];
+          pressure[a] = m_nodalVolume[a] > 0 ? m_nodalBulkModulus[a] * sum / m_nodalVolume[a] : 0.0;
+        }
       });
-  // p_a = kappa_a theta_a = kappa_a (sum (V_e / 4) d_e) / V_a.
-  for (std::size_t a = 0; a < pressure.size(); ++a)
-    pressure[a] =
-        m_nodalVolume[a] > 0 ? m_nodalBulkModulus[a] * m_nodal[a].x() / m_nodalVolume[a] : 0.0;
 }
 
 void AveragedNodalPressure::scatterPressure(Elements& elements, std::span<const double> pressure,
@@ -86,15 +95,16 @@ void AveragedNodalPressure::scatterPressure(Elements& elements, std::span<const 
         const auto& nodes = elements.elements()[e];
         const double meanPressure =
             (pressure[nodes[0]] + pressure[nodes[1]] + pressure[nodes[2]] + pressure[nodes[3]]) / 4;
-        corner.noalias() = (-m_volume[e] * meanPressure) * elements.rotations()[e] * m_gradients[e];
+        corner.noalias() = (-m_volume[e] * meanPressure) * m_rotatedGradients[e];
       });
 }
 
 void AveragedNodalPressure::addForce(Elements& elements, std::span<const Vec3d> x,
                                      std::span<Vec3d> f, const ThreadPool& pool) {
-  averagePressure(elements, m_pressure, pool, [&](std::size_t e) {
-    return fem::computeCorotatedDivergence(m_gradients[e], elements.rotations()[e],
-                                           elements.gather(x, e),
+  averagePressure(m_pressure, pool, [&](std::size_t e) {
+    const Eigen::Matrix3d& R = elements.rotations()[e];
+    m_rotatedGradients[e].noalias() = R * m_gradients[e];
+    return fem::computeCorotatedDivergence(m_gradients[e], R, elements.gather(x, e),
                                            elements.constants()[e].restPositions);
   });
   scatterPressure(elements, m_pressure, f, 1.0, pool);
@@ -102,9 +112,14 @@ void AveragedNodalPressure::addForce(Elements& elements, std::span<const Vec3d> 
 
 void AveragedNodalPressure::addDForce(Elements& elements, std::span<const Vec3d> dx,
                                       std::span<Vec3d> df, double kFactor, const ThreadPool& pool) {
-  averagePressure(elements, m_dPressure, pool, [&](std::size_t e) {
-    return fem::computeCorotatedDivergence(m_gradients[e], elements.rotations()[e],
-                                           elements.gather(dx, e), fem::TetrahedronVectors::Zero());
+  // d_e = sum_i g_i . (R_e^T dx_i) = sum_i (R_e g_i) . dx_i, relative to node 0 as the force
+  // (the g_i sum to zero).
+  averagePressure(m_dPressure, pool, [&](std::size_t e) {
+    const auto& nodes = elements.elements()[e];
+    const fem::TetrahedronVectors& G = m_rotatedGradients[e];
+    const Vec3d& dx0 = dx[nodes[0]];
+    return G.col(1).dot(dx[nodes[1]] - dx0) + G.col(2).dot(dx[nodes[2]] - dx0) +
+           G.col(3).dot(dx[nodes[3]] - dx0);
   });
   scatterPressure(elements, m_dPressure, df, kFactor, pool);
 }
@@ -119,8 +134,7 @@ void AveragedNodalPressure::addKToMatrix(const Elements& elements, MatrixAccumul
     m_ringWeights.clear();
     for (Index k = m_vertexOffsets[a]; k < m_vertexOffsets[a + 1]; ++k) {
       const Index e = m_vertexElements[k];
-      const fem::TetrahedronVectors w =
-          (m_volume[e] / 4) * elements.rotations()[e] * m_gradients[e];
+      const fem::TetrahedronVectors w = (m_volume[e] / 4) * m_rotatedGradients[e];
       for (int i = 0; i < 4; ++i) {
         const Index node = elements.elements()[e][i];
         const auto found = std::find(m_ringNodes.begin(), m_ringNodes.end(), node);

@@ -30,10 +30,12 @@
 // rotations, an error O(rotation differences x strain) that vanishes for rigid motions and in
 // the small-strain limit.
 //
-// Cost per step: two passes over the elements and two over the vertices, through the
-// deterministic element-then-vertex sums of CorotationalElements (same bits for any thread
-// count). The assembled K has a wider stencil than the elements' (vertex pairs within two
-// edges): about (3 r)^2 entries per vertex, r the vertices around it.
+// Cost of a force or a product: an element pass (the divergence, with the rotated gradients
+// R_e g_i kept from addForce) and a vertex pass (the nodal pressures), then the forces by
+// CorotationalElements' element-then-vertex sums. Every vertex sum runs in increasing element
+// order: the same bits for any thread count. The assembled K has a wider stencil than the
+// elements' (vertex pairs within two edges): about (3 r)^2 entries per vertex, r the vertices
+// around it.
 #pragma once
 
 #include <span>
@@ -52,8 +54,7 @@ class AveragedNodalPressure {
   /// (one value, or one per element) and Poisson's ratio (valid: checked by the caller).
   /// Degenerate elements (zero constants) count for nothing. Allocates; call from init and
   /// after the elements or the material changed.
-  void setup(Elements& elements, std::span<const double> youngModulus, double poissonRatio,
-             const ThreadPool& pool);
+  void setup(const Elements& elements, std::span<const double> youngModulus, double poissonRatio);
 
   /// f += volumetric forces at x (N), with the rotations of the elements' last addForce.
   void addForce(Elements& elements, std::span<const Vec3d> x, std::span<Vec3d> f,
@@ -75,24 +76,25 @@ class AveragedNodalPressure {
  private:
   /// pressure_a = kappa_a theta_a of the divergences d_e = divergence(e).
   template <class Divergence>
-  void averagePressure(Elements& elements, std::span<double> pressure, const ThreadPool& pool,
-                       Divergence&& divergence);
+  void averagePressure(std::span<double> pressure, const ThreadPool& pool, Divergence&& divergence);
   /// out += factor * (forces -V_e pbar_e R_e g_i of the nodal pressures).
   void scatterPressure(Elements& elements, std::span<const double> pressure, std::span<Vec3d> out,
                        double factor, const ThreadPool& pool);
 
   std::vector<fem::TetrahedronVectors> m_gradients;  // (elements) g_i = grad N_i at rest (1/m)
-  std::vector<double> m_volume;                      // (elements) |V_e| (m^3)
-  std::vector<double> m_bulkModulus;                 // (elements) kappa_e (Pa)
-  std::vector<double> m_nodalVolume;                 // (points) V_a (m^3)
-  std::vector<double> m_nodalBulkModulus;            // (points) kappa_a (Pa)
-  std::vector<double> m_pressure;                    // (points) p_a of the last addForce (Pa)
-  std::vector<double> m_dPressure;                   // (points) dp_a of the last addDForce (Pa)
-  std::vector<Vec3d> m_nodal;                        // (points) scratch of the vertex sums
-  std::vector<Index> m_vertexOffsets{0};             // (points + 1) into m_vertexElements
-  std::vector<Index> m_vertexElements;               // tetrahedra around each vertex, increasing
-  std::vector<Index> m_ringNodes;                    // scratch of addKToMatrix: vertices near a
-  std::vector<Vec3d> m_ringWeights;                  // scratch of addKToMatrix: w_a at them
+  std::vector<fem::TetrahedronVectors> m_rotatedGradients;  // (elements) R_e g_i (1/m), R_e
+                                                            // of the last addForce
+  std::vector<double> m_volume;                             // (elements) |V_e| (m^3)
+  std::vector<double> m_bulkModulus;                        // (elements) kappa_e (Pa)
+  std::vector<double> m_nodalVolume;                        // (points) V_a (m^3)
+  std::vector<double> m_nodalBulkModulus;                   // (points) kappa_a (Pa)
+  std::vector<double> m_share;            // (elements) (V_e / 4) d_e of the last pass
+  std::vector<double> m_pressure;         // (points) p_a of the last addForce (Pa)
+  std::vector<double> m_dPressure;        // (points) dp_a of the last addDForce (Pa)
+  std::vector<Index> m_vertexOffsets{0};  // (points + 1) into m_vertexElements
+  std::vector<Index> m_vertexElements;    // tetrahedra around each vertex, increasing
+  std::vector<Index> m_ringNodes;         // scratch of addKToMatrix: vertices near a
+  std::vector<Vec3d> m_ringWeights;       // scratch of addKToMatrix: w_a at them
 };
 
 }  // namespace stroma

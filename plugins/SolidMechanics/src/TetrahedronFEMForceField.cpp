@@ -34,8 +34,7 @@ void TetrahedronFEMForceField::refreshNodalPressure() {
                                         m_model.elements().size(), "tetrahedra"))
     return;
   m_pressureElementsRevision = m_model.elementsRevision();
-  m_pressure.setup(m_model.elements(), d_youngModulus.value(), d_poissonRatio.value(),
-                   node()->threadPool());
+  m_pressure.setup(m_model.elements(), d_youngModulus.value(), d_poissonRatio.value());
 }
 
 void TetrahedronFEMForceField::addForce(const MechanicalParams&, VecDeriv& f, const VecCoord& x,
