@@ -168,6 +168,21 @@ inline Eigen::SparseMatrix<double> assembleStiffness(Scene& scene) {
   return A.matrix();
 }
 
+/// -K restricted to the free degrees of freedom: freeIndex[k] is the row of dof k among the free
+/// ones, or -1 when it is fixed (the system matrix of a static solve, freeCount x freeCount).
+inline Eigen::SparseMatrix<double> restrictNegated(const Eigen::SparseMatrix<double>& K,
+                                                   const std::vector<Eigen::Index>& freeIndex,
+                                                   Eigen::Index freeCount) {
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (Eigen::Index col = 0; col < K.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(K, col); it; ++it)
+      if (freeIndex[it.row()] >= 0 && freeIndex[it.col()] >= 0)
+        triplets.emplace_back(freeIndex[it.row()], freeIndex[it.col()], -it.value());
+  Eigen::SparseMatrix<double> A(freeCount, freeCount);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  return A;
+}
+
 /// Forces of every field of the scene at its current positions, as one vector.
 inline Eigen::VectorXd computeForces(Scene& scene) {
   MechanicalOperations mop(scene.root(), scene.timing());

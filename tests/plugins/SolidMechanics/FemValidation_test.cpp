@@ -45,13 +45,7 @@ double cantileverDeflection(const std::string& elements, int k) {
       for (int c = 0; c < 3; ++c) freeIndex[3 * i + c] = freeCount++;
     if (mesh.points[i].x() > kLength - 1e-12) tip.push_back(i);
   }
-  std::vector<Eigen::Triplet<double>> triplets;
-  for (Eigen::Index col = 0; col < K.outerSize(); ++col)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(K, col); it; ++it)
-      if (freeIndex[it.row()] >= 0 && freeIndex[it.col()] >= 0)
-        triplets.emplace_back(freeIndex[it.row()], freeIndex[it.col()], -it.value());
-  Eigen::SparseMatrix<double> A(freeCount, freeCount);
-  A.setFromTriplets(triplets.begin(), triplets.end());
+  const Eigen::SparseMatrix<double> A = restrictNegated(K, freeIndex, freeCount);
   Eigen::VectorXd load = Eigen::VectorXd::Zero(freeCount);
   for (Eigen::Index i : tip) load[freeIndex[3 * i + 2]] = -kLoad / static_cast<double>(tip.size());
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
