@@ -23,6 +23,10 @@ namespace stroma {
 /// With a rotating method the force is only approximately -dE/dx (CorotationalElement.h):
 /// the energy reported is then approximate.
 ///
+/// With volumetricIntegration="reduced", Ke = integral B^T C_dev B (2 x 2 x 2 points) +
+/// kappa V bbar bbar^T, the volumetric part on the element's mean dilatation (B-bar,
+/// VolumetricSplit.h): no volumetric locking as nu -> 1/2, no hourglass mode.
+///
 /// Same rest-shape checks, run-time material changes and deterministic parallel loops as
 /// TetrahedronFEMForceField.
 class HexahedronFEMForceField final : public ForceField<Vec3Types> {

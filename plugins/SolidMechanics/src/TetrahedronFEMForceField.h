@@ -28,6 +28,10 @@ namespace stroma {
 /// rest_position at init. Element constants are computed at init into contiguous arrays and
 /// again at the first step after youngModulus or poissonRatio changed.
 ///
+/// With volumetricIntegration="nodal" the elements keep the deviatoric part of C only and
+/// AveragedNodalPressure adds the volumetric part, one volumetric strain per vertex (Bonet and
+/// Burton 1998): no volumetric locking as nu -> 1/2; E then includes its energy.
+///
 /// Rest shape: a degenerate (flat) tetrahedron is an error naming it; an inverted one (vertex
 /// order not SOFA's, negative volume) is a warning: it works, with |V|.
 ///
