@@ -48,7 +48,13 @@ void ReferenceComparison::init() {
   publish({kNaN, kNaN, kNaN, -1});
   m_done.assign(d_times.value().size(), false);
   if (!l_state) l_state.set(node() ? node()->template get<State>() : nullptr);
-  if (!checkParameters()) return;
+  m_checked = checkParameters();
+}
+
+void ReferenceComparison::bwdInit() {
+  // After every init (bottom-up): the state has its rest positions whatever the scene order.
+  m_ready = false;
+  if (!m_checked) return;
 
   // The rest shape the references are expressed on: the state's rest positions (its positions
   // when it keeps none).

@@ -242,7 +242,11 @@ class ReferenceComparison final : public BehaviorModel,
 
   ReferenceComparison();
   void init() override;
-  void reinit() override { init(); }
+  void bwdInit() override;
+  void reinit() override {
+    init();
+    bwdInit();
+  }
   void updatePosition(double dt) override;
   std::vector<std::string> runSummaryLines() const override;
 
@@ -265,6 +269,7 @@ class ReferenceComparison final : public BehaviorModel,
   void compareNow(double time);
   void publish(const Comparison& c);
 
+  bool m_checked = false;  ///< init found the parameters usable
   bool m_ready = false;
   /// Reference points: the state point each compares with (by index), or its location.
   std::vector<unsigned> m_pointIndex;

@@ -16,8 +16,9 @@
 #include "Validation/kernels/CylinderTorsion.h"
 #include "Validation/kernels/LameCylinder.h"
 #include "Validation/kernels/UniaxialStretch.h"
-#include "plugins/SolidMechanics/FemTestScenes.h"
+#include "ValidationScenes.h"
 #include "simulation/AnimationLoop.h"
+#include "simulation/RunSummary.h"
 #include "simulation/StateFile.h"
 
 namespace stroma::test {
@@ -25,35 +26,8 @@ namespace {
 
 using reference::AffinePatch;
 
-/// A node "body" with a MeshTopology, a MechanicalObject "dofs" at `positions` resting at the
-/// mesh's points, then `components`.
-std::string bodyScene(const FemMesh& mesh, const std::string& elements,
-                      const std::vector<Vec3d>& positions, const std::string& components) {
-  const std::string list =
-      elements == "hexahedra" ? elementsText(mesh.hexahedra) : elementsText(mesh.tetrahedra);
-  return "<Node name=\"root\" gravity=\"0 0 0\" dt=\"1\">\n<Node name=\"body\">\n"
-         "<MeshTopology name=\"mesh\" " +
-         elements + "=\"" + list +
-         "\"/>\n"
-         "<MechanicalObject name=\"dofs\" position=\"" +
-         pointsText(positions) + "\" rest_position=\"" + pointsText(mesh.points) + "\"/>\n" +
-         components + "\n</Node>\n</Node>\n";
-}
-
-double number(Scene& scene, const std::string& field) {
-  Base* c = objectAt<Base>(scene, "/body/compare");
-  if (!c) return NAN;
-  return std::stod(c->findData(field)->valueText());
-}
-
 MechanicalState<Vec3Types>* dofs(Scene& scene) {
   return objectAt<MechanicalState<Vec3Types>>(scene, "/body/dofs");
-}
-
-std::string temporaryFile(const std::string& name, const std::string& text) {
-  const std::filesystem::path path = std::filesystem::temp_directory_path() / name;
-  std::ofstream(path) << text;
-  return path.string();
 }
 
 // --- Patch test -----------------------------------------------------------------------------
@@ -82,11 +56,11 @@ void expectPatchPassed(const FemMesh& mesh, const std::string& elements,
                                        "<ReferenceComparison name=\"compare\" analytic=\"patch\" "
                                        "referenceLength=\"1\"/>")));
   // Before the solve the interior points are 1e-3 away from the field.
-  EXPECT_GT(number(scene, "maxErrorAbsolute"), 5e-4);
+  EXPECT_GT(comparisonOutput(scene, "maxErrorAbsolute"), 5e-4);
   ASSERT_TRUE(scene.step(1));
-  EXPECT_LT(number(scene, "maxError"), 1e-13) << elements;
-  EXPECT_LT(number(scene, "rmsError"), 1e-13) << elements;
-  EXPECT_EQ(number(scene, "comparedTime"), 1);
+  EXPECT_LT(comparisonOutput(scene, "maxError"), 1e-13) << elements;
+  EXPECT_LT(comparisonOutput(scene, "rmsError"), 1e-13) << elements;
+  EXPECT_EQ(comparisonOutput(scene, "comparedTime"), 1);
 }
 
 TEST(ReferenceComparison, PatchTestOfLinearHexahedraIsExact) {
@@ -113,7 +87,7 @@ TEST(ReferenceComparison, PerturbedStateGivesTheExpectedError) {
   ASSERT_TRUE(loadQuietly(scene, bodyScene(mesh, "hexahedra", exact,
                                            "<ReferenceComparison name=\"compare\" "
                                            "analytic=\"patch\" referenceLength=\"2\"/>")));
-  EXPECT_LT(number(scene, "maxErrorAbsolute"), 1e-17);
+  EXPECT_LT(comparisonOutput(scene, "maxErrorAbsolute"), 1e-17);
   // Point 9 off by (3, 4, 0) 1e-4 and point 12 by 1e-4 along z: max 5e-4, rms
   // sqrt((25 + 1) 1e-8 / 16).
   auto& x = dofs(scene)->writeCoord(VecId::position());
@@ -123,12 +97,12 @@ TEST(ReferenceComparison, PerturbedStateGivesTheExpectedError) {
   // Reading after a step-less change: the engine compares only when told the state moved.
   // (ReferenceComparison lives in its plugin: reached through the framework's interface.)
   objectAt<BehaviorModel>(scene, "/body/compare")->updatePosition(1);
-  EXPECT_NEAR(number(scene, "maxErrorAbsolute"), 5e-4, 1e-15);
-  EXPECT_NEAR(number(scene, "maxError"), 2.5e-4, 1e-15);
-  EXPECT_NEAR(number(scene, "rmsErrorAbsolute"), std::sqrt(26e-8 / 16), 1e-15);
-  EXPECT_NEAR(number(scene, "rmsError"), std::sqrt(26e-8 / 16) / 2, 1e-15);
-  EXPECT_EQ(number(scene, "worstIndex"), 9);
-  EXPECT_EQ(number(scene, "comparedTime"), 0.5);
+  EXPECT_NEAR(comparisonOutput(scene, "maxErrorAbsolute"), 5e-4, 1e-15);
+  EXPECT_NEAR(comparisonOutput(scene, "maxError"), 2.5e-4, 1e-15);
+  EXPECT_NEAR(comparisonOutput(scene, "rmsErrorAbsolute"), std::sqrt(26e-8 / 16), 1e-15);
+  EXPECT_NEAR(comparisonOutput(scene, "rmsError"), std::sqrt(26e-8 / 16) / 2, 1e-15);
+  EXPECT_EQ(comparisonOutput(scene, "worstIndex"), 9);
+  EXPECT_EQ(comparisonOutput(scene, "comparedTime"), 0.5);
   // The subset without the perturbed points has no error.
   Runtime runtime2;
   Scene subset(runtime2);
@@ -138,7 +112,43 @@ TEST(ReferenceComparison, PerturbedStateGivesTheExpectedError) {
                                             "indices=\"0 1 2 8\"/>")));
   dofs(subset)->writeCoord(VecId::position())[9] += Vec3d(1, 1, 1);
   objectAt<BehaviorModel>(subset, "/body/compare")->updatePosition(1);
-  EXPECT_LT(number(subset, "maxErrorAbsolute"), 1e-17);
+  EXPECT_LT(comparisonOutput(subset, "maxErrorAbsolute"), 1e-17);
+}
+
+TEST(ReferenceComparison, ComparesAtTheGivenTimesAndSummarizesThem) {
+  const FemMesh mesh = makeMacNealHarderPatch();
+  Runtime runtime;
+  Scene scene(runtime);
+  ASSERT_TRUE(loadQuietly(scene, bodyScene(mesh, "hexahedra", mesh.points,
+                                           "<ReferenceComparison name=\"compare\" "
+                                           "analytic=\"patch\" displacementGradient=\"0 0 0 0 "
+                                           "0 0 0 0 0\" referenceLength=\"1\" "
+                                           "times=\"1 2 5\"/>")));
+  auto* compare = objectAt<BehaviorModel>(scene, "/body/compare");
+  ASSERT_NE(compare, nullptr);
+  // Before any listed time: nothing compared.
+  EXPECT_TRUE(std::isnan(comparisonOutput(scene, "maxErrorAbsolute")));
+  scene.root().setTime(1);
+  compare->updatePosition(1);  // the state at time 1: compared (no error)
+  EXPECT_EQ(comparisonOutput(scene, "comparedTime"), 1);
+  EXPECT_EQ(comparisonOutput(scene, "maxErrorAbsolute"), 0);
+  dofs(scene)->writeCoord(VecId::position())[3] += Vec3d(0, 0.25, 0);
+  scene.root().setTime(1.4);  // more than dt/2 before time 2: no comparison
+  compare->updatePosition(1);
+  EXPECT_EQ(comparisonOutput(scene, "comparedTime"), 1);
+  scene.root().setTime(1.6);
+  compare->updatePosition(1);
+  EXPECT_EQ(comparisonOutput(scene, "comparedTime"), 1.6);
+  EXPECT_EQ(comparisonOutput(scene, "maxErrorAbsolute"), 0.25);
+  EXPECT_EQ(comparisonOutput(scene, "worstIndex"), 3);
+  // What `stroma run` prints: one line per comparison, and the time not reached.
+  const auto* summary = dynamic_cast<const RunSummaryProvider*>(compare);
+  ASSERT_NE(summary, nullptr);
+  const std::vector<std::string> lines = summary->runSummaryLines();
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_NE(lines[0].find("error at time 1 s: max 0"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[1].find("error at time 1.6 s: max 0.25"), std::string::npos) << lines[1];
+  EXPECT_NE(lines[2].find("time 5 s not reached"), std::string::npos) << lines[2];
 }
 
 // --- Cantilever: convergence in mesh size ------------------------------------------------------
@@ -147,32 +157,16 @@ TEST(ReferenceComparison, PerturbedStateGivesTheExpectedError) {
 /// 0.1 x 0.1 m, E = 1e8 Pa, nu = 0.3, P = 100 N) for the beam in (10 k, k, k) cells, linear
 /// (small) elements, one StaticSolver step.
 double cantileverTipError(const std::string& elements, int k) {
-  const FemMesh mesh = makeBoxMesh(Vec3d(1, 0.1, 0.1), Vec3i(10 * k, k, k));
-  std::string clamped, tip;
-  for (unsigned i = 0; i < mesh.points.size(); ++i) {
-    if (mesh.points[i].x() < 1e-12) clamped += std::to_string(i) + " ";
-    if (mesh.points[i].x() > 1 - 1e-12) tip += std::to_string(i) + " ";
-  }
-  const std::string forceField =
-      elements == "hexahedra" ? "HexahedronFEMForceField" : "TetrahedronFEMForceField";
   Runtime runtime;
   Scene scene(runtime);
-  if (!loadQuietly(
-          scene, bodyScene(mesh, elements, mesh.points,
-                           "<StaticSolver/><SparseLDLSolver/><" + forceField +
-                               " youngModulus=\"1e8\" poissonRatio=\"0.3\" method=\"small\"/>"
-                               "<FixedProjectiveConstraint indices=\"" +
-                               clamped +
-                               "\"/>"
-                               "<ConstantForceField indices=\"" +
-                               tip +
-                               "\" totalForce=\"0 0 -100\"/>"
-                               "<ReferenceComparison name=\"compare\" analytic=\"cantileverTip\" "
-                               "referenceLength=\"0.040306\" origin=\"0 0.05 0.05\" "
-                               "loadDirection=\"0 0 -1\" tipForce=\"100\" youngModulus=\"1e8\"/>")))
+  if (!loadQuietly(scene, cantileverScene(
+                              elements, k,
+                              "<ReferenceComparison name=\"compare\" analytic=\"cantileverTip\" "
+                              "referenceLength=\"0.040306\" origin=\"0 0.05 0.05\" "
+                              "loadDirection=\"0 0 -1\" tipForce=\"100\" youngModulus=\"1e8\"/>")))
     return NAN;
   if (!scene.step(1)) return NAN;
-  return number(scene, "rmsError");
+  return comparisonOutput(scene, "rmsError");
 }
 
 TEST(ReferenceComparison, CantileverConvergesInMeshSize) {
@@ -243,7 +237,7 @@ double blockError(const std::string& elements, int k, const std::string& forceFi
                                         "poissonRatio=\"0.3\"/>")))
     return NAN;
   if (!scene.step(1)) return NAN;
-  return number(scene, "maxError");
+  return comparisonOutput(scene, "maxError");
 }
 
 TEST(ReferenceComparison, UniaxialBlockIsExactAtEveryResolution) {
@@ -293,7 +287,7 @@ double analyticError(const std::string& attributes, Field displacement, double& 
     Scene scene(runtime);
     if (!loadQuietly(scene, bodyScene(mesh, "hexahedra", deformed ? moved : mesh.points, compare)))
       return NAN;
-    (deformed ? error : atRest) = number(scene, "maxErrorAbsolute");
+    (deformed ? error : atRest) = comparisonOutput(scene, "maxErrorAbsolute");
   }
   return error;
 }

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "plugins/SolidMechanics/FemTestScenes.h"
+#include "ValidationScenes.h"
 #include "simulation/AnimationLoop.h"
 #include "simulation/StateFile.h"
 
@@ -19,23 +19,13 @@ namespace stroma::test {
 namespace {
 
 std::string cubeScene(const FemMesh& mesh, const std::string& compare) {
-  return "<Node name=\"root\" gravity=\"0 0 0\" dt=\"1\">\n<Node name=\"body\">\n"
-         "<MeshTopology name=\"mesh\" hexahedra=\"" +
-         elementsText(mesh.hexahedra) +
-         "\"/>\n"
-         "<MechanicalObject name=\"dofs\" position=\"" +
-         pointsText(mesh.points) + "\"/>\n" + compare + "\n</Node>\n</Node>\n";
+  return bodyScene(mesh, "hexahedra", mesh.points, compare);
 }
 
 std::string writeFile(const std::string& name, const std::string& text) {
   const std::filesystem::path path = std::filesystem::temp_directory_path() / name;
   std::ofstream(path) << text;
   return path.string();
-}
-
-double number(Scene& scene, const std::string& field) {
-  Base* c = objectAt<Base>(scene, "/body/compare");
-  return c ? std::stod(c->findData(field)->valueText()) : NAN;
 }
 
 /// Moves every point of the state by the affine map x -> x + A x, then lets the comparison
@@ -85,10 +75,10 @@ TEST(ReferenceFiles, StateFileByIndex) {
   // At rest the error is the reference's own displacement; deformed alike, none.
   double largest = 0;
   for (const Vec3d& p : mesh.points) largest = std::max(largest, (kStretch * p).norm());
-  EXPECT_NEAR(number(scene, "maxErrorAbsolute"), largest, 1e-15);
-  EXPECT_NEAR(number(scene, "maxError"), largest / 0.5, 1e-15);
+  EXPECT_NEAR(comparisonOutput(scene, "maxErrorAbsolute"), largest, 1e-15);
+  EXPECT_NEAR(comparisonOutput(scene, "maxError"), largest / 0.5, 1e-15);
   deform(scene, kStretch);
-  EXPECT_LT(number(scene, "maxErrorAbsolute"), 1e-15);
+  EXPECT_LT(comparisonOutput(scene, "maxErrorAbsolute"), 1e-15);
 }
 
 TEST(ReferenceFiles, MarkersByIndexAndLocatedInTheMesh) {
@@ -117,7 +107,7 @@ TEST(ReferenceFiles, MarkersByIndexAndLocatedInTheMesh) {
   // The mesh interpolates an affine field exactly: deformed by kStretch, no error (to the 6
   // decimals of the file, in mm).
   deform(scene, kStretch);
-  EXPECT_LT(number(scene, "maxErrorAbsolute"), 2e-9);
+  EXPECT_LT(comparisonOutput(scene, "maxErrorAbsolute"), 2e-9);
   // By index: the cube's centre (point 13 of the 3 x 3 x 3 points) as marker 1 of a file.
   const std::string centre = writeFile("stroma_marker_centre.csv", "0.5,0.5,0.5\n0.5,0.5,0.6\n");
   Runtime runtime2;
@@ -128,9 +118,9 @@ TEST(ReferenceFiles, MarkersByIndexAndLocatedInTheMesh) {
                                                  centre +
                                                  "\" markerIndices=\"13 13\" "
                                                  "referenceLength=\"2\"/>")));
-  EXPECT_NEAR(number(byIndex, "maxErrorAbsolute"), 0.1, 1e-15);
-  EXPECT_NEAR(number(byIndex, "rmsErrorAbsolute"), 0.1 / std::sqrt(2.0), 1e-15);
-  EXPECT_EQ(number(byIndex, "worstIndex"), 1);
+  EXPECT_NEAR(comparisonOutput(byIndex, "maxErrorAbsolute"), 0.1, 1e-15);
+  EXPECT_NEAR(comparisonOutput(byIndex, "rmsErrorAbsolute"), 0.1 / std::sqrt(2.0), 1e-15);
+  EXPECT_EQ(comparisonOutput(byIndex, "worstIndex"), 1);
 }
 
 TEST(ReferenceFiles, TruthCubeBeadsAtRest) {
@@ -170,8 +160,8 @@ TEST(ReferenceFiles, TruthCubeBeadsAtRest) {
     largest = std::max(largest, d);
     squares += d * d;
   }
-  EXPECT_NEAR(number(scene, "maxErrorAbsolute"), largest, 1e-12);
-  EXPECT_NEAR(number(scene, "rmsErrorAbsolute"), std::sqrt(squares / 343), 1e-12);
+  EXPECT_NEAR(comparisonOutput(scene, "maxErrorAbsolute"), largest, 1e-12);
+  EXPECT_NEAR(comparisonOutput(scene, "rmsErrorAbsolute"), std::sqrt(squares / 343), 1e-12);
 }
 
 TEST(ReferenceFiles, BadInputIsAnErrorNamingTheFieldAndFile) {

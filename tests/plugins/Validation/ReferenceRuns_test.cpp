@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Convergence in mesh size against our own converged run (share/reference/
-// CantileverSmallHexa.state, 80 x 8 x 8 linear hexahedra, made by make_references.sh): the
-// coarse meshes' displacements interpolated at the reference's points, through
-// ReferenceComparison's state-file reference located in the mesh.
+// Convergence in mesh size against fine reference runs: our own (share/reference/
+// CantileverSmallHexa.state, 80 x 8 x 8 linear hexahedra, make_references.sh) and CalculiX's
+// (share/reference/calculix, 80 x 8 x 8 C3D8I, cantilever_ccx.py): the coarse meshes'
+// displacements interpolated at the reference's points, through ReferenceComparison's
+// state-file reference located in the mesh.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,48 +11,28 @@
 #include <string>
 #include <vector>
 
-#include "plugins/SolidMechanics/FemTestScenes.h"
+#include "ValidationScenes.h"
 
 namespace stroma::test {
 namespace {
 
-const std::filesystem::path kReference =
-    std::filesystem::path(STROMA_SOURCE_DIR) / "share/reference/CantileverSmallHexa.state";
+const std::filesystem::path kReferenceDir =
+    std::filesystem::path(STROMA_SOURCE_DIR) / "share/reference";
+const std::filesystem::path kReference = kReferenceDir / "CantileverSmallHexa.state";
+const std::filesystem::path kCalculix = kReferenceDir / "calculix/CantileverSmallCalculix.state";
 
-/// RMS error over the reference's 6561 points, relative to the tip deflection 0.0403 m, of the
-/// cantilever of CantileverSmallHexa.scn meshed with (10 k, k, k) cells of `elements`.
-double errorAgainstReference(const std::string& elements, int k) {
-  const FemMesh mesh = makeBoxMesh(Vec3d(1, 0.1, 0.1), Vec3i(10 * k, k, k));
-  std::string clamped, tip;
-  for (unsigned i = 0; i < mesh.points.size(); ++i) {
-    if (mesh.points[i].x() < 1e-12) clamped += std::to_string(i) + " ";
-    if (mesh.points[i].x() > 1 - 1e-12) tip += std::to_string(i) + " ";
-  }
-  const bool hexahedra = elements == "hexahedra";
+/// RMS error over the 6561 points of `reference`, relative to the tip deflection 0.0403 m, of
+/// the cantilever of CantileverSmallHexa.scn meshed with (10 k, k, k) cells of `elements`.
+double errorAgainstReference(const std::filesystem::path& reference, const std::string& elements,
+                             int k) {
   const std::string xml =
-      "<Node name=\"root\" gravity=\"0 0 0\" dt=\"1\">\n<Node name=\"body\">\n"
-      "<StaticSolver/><SparseLDLSolver/>"
-      "<MeshTopology name=\"mesh\" " +
-      elements + "=\"" +
-      (hexahedra ? elementsText(mesh.hexahedra) : elementsText(mesh.tetrahedra)) +
-      "\"/>\n"
-      "<MechanicalObject name=\"dofs\" position=\"" +
-      pointsText(mesh.points) + "\"/>\n<" +
-      (hexahedra ? "HexahedronFEMForceField" : "TetrahedronFEMForceField") +
-      " youngModulus=\"1e8\" poissonRatio=\"0.3\" method=\"small\"/>"
-      "<FixedProjectiveConstraint indices=\"" +
-      clamped +
-      "\"/>"
-      "<ConstantForceField indices=\"" +
-      tip +
-      "\" totalForce=\"0 0 -100\"/>"
-      "<ReferenceComparison name=\"compare\" referenceState=\"" +
-      kReference.string() + "\" referenceLength=\"0.0403\"/>\n</Node>\n</Node>\n";
+      cantileverScene(elements, k,
+                      "<ReferenceComparison name=\"compare\" referenceState=\"" +
+                          reference.string() + "\" referenceLength=\"0.0403\"/>");
   Runtime runtime;
   Scene scene(runtime);
   if (!loadQuietly(scene, xml) || !scene.step(1)) return NAN;
-  Base* compare = objectAt<Base>(scene, "/body/compare");
-  return compare ? std::stod(compare->findData("rmsError")->valueText()) : NAN;
+  return comparisonOutput(scene, "rmsError");
 }
 
 TEST(ReferenceRuns, LinearElementsConvergeToTheConvergedRun) {
@@ -66,12 +47,35 @@ TEST(ReferenceRuns, LinearElementsConvergeToTheConvergedRun) {
   // the last ratio above 3.5; tetrahedra decreasing with a slope in [0.7, 1.2].
   std::vector<double> hexahedra, tetrahedra;
   for (int k : {1, 2, 4}) {
-    hexahedra.push_back(errorAgainstReference("hexahedra", k));
-    tetrahedra.push_back(errorAgainstReference("tetrahedra", k));
+    hexahedra.push_back(errorAgainstReference(kReference, "hexahedra", k));
+    tetrahedra.push_back(errorAgainstReference(kReference, "tetrahedra", k));
   }
   const double hexSlope = std::log2(hexahedra[0] / hexahedra[2]) / 2;
   EXPECT_NEAR(hexSlope, 1.95, 0.25) << hexahedra[0] << " " << hexahedra[1] << " " << hexahedra[2];
   EXPECT_GT(hexahedra[1] / hexahedra[2], 3.5);
+  EXPECT_GT(tetrahedra[0], tetrahedra[1]);
+  EXPECT_GT(tetrahedra[1], tetrahedra[2]);
+  const double tetSlope = std::log2(tetrahedra[0] / tetrahedra[2]) / 2;
+  EXPECT_NEAR(tetSlope, 0.95, 0.25)
+      << tetrahedra[0] << " " << tetrahedra[1] << " " << tetrahedra[2];
+}
+
+TEST(ReferenceRuns, LinearElementsConvergeToCalculix) {
+  if (!std::filesystem::exists(kCalculix))
+    GTEST_SKIP() << "no " << kCalculix << ": run share/reference/calculix/cantilever_ccx.py";
+  std::vector<double> hexahedra, tetrahedra;
+  for (int k : {1, 2, 4}) {
+    hexahedra.push_back(errorAgainstReference(kCalculix, "hexahedra", k));
+    tetrahedra.push_back(errorAgainstReference(kCalculix, "tetrahedra", k));
+  }
+  // Measured: hexahedra 0.171, 0.0606, 0.0172 (slope 1.66; 1.50 then 1.82 between successive
+  // meshes), tetrahedra 0.379, 0.243, 0.104 (0.93). Against CalculiX the hexahedra's order is
+  // lower than against our own 80 x 8 x 8 run (1.85): that run shares their locking bias (its
+  // tip is 0.9 % short of CalculiX's), so part of the coarse error cancels. Asserted: hexahedra
+  // in [1.45, 1.9] with the last ratio above 3.2; tetrahedra decreasing, slope in [0.7, 1.2].
+  const double hexSlope = std::log2(hexahedra[0] / hexahedra[2]) / 2;
+  EXPECT_NEAR(hexSlope, 1.67, 0.22) << hexahedra[0] << " " << hexahedra[1] << " " << hexahedra[2];
+  EXPECT_GT(hexahedra[1] / hexahedra[2], 3.2);
   EXPECT_GT(tetrahedra[0], tetrahedra[1]);
   EXPECT_GT(tetrahedra[1], tetrahedra[2]);
   const double tetSlope = std::log2(tetrahedra[0] / tetrahedra[2]) / 2;
