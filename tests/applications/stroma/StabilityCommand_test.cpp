@@ -4,78 +4,40 @@
 // (large and polar) stays bounded on every extreme case, and the explicit solvers refuse a time
 // step above the stability bound they estimated.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include "plugins/TestPlugin/TestSupport.h"
+#include "support/CliRun.h"
 
 namespace stroma::test {
 namespace {
 
 using Row = std::map<std::string, std::string>;
 
-// One CSV line: fields separated by commas, quoted ones with "" for a quote.
-std::vector<std::string> splitCsv(const std::string& line) {
-  std::vector<std::string> fields(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-      fields.back() += '"';
-      ++i;
-    } else if (c == '"') {
-      quoted = !quoted;
-    } else if (c == ',' && !quoted) {
-      fields.emplace_back();
-    } else {
-      fields.back() += c;
-    }
-  }
-  return fields;
-}
-
 struct SuiteRun {
-  int code = -1;
-  std::string output;
-  std::vector<Row> rows;
+  CliRun run;
+  std::vector<Row> rows;  ///< the CSV's rows, by column name
 };
 
 const SuiteRun& quickSuite() {
-  static const SuiteRun run = [] {
+  static const SuiteRun suite = [] {
     SuiteRun r;
     TempDir dir;
     const auto csv = dir.path() / "stability.csv";
-    const auto log = dir.path() / "log.txt";
-    const std::string command = std::string("\"") + STROMA_CLI +
-                                "\" check --stability --quick --csv \"" + csv.string() + "\" > \"" +
-                                log.string() + "\" 2>&1";
-    const int status = std::system(command.c_str());
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream logFile(log);
-    std::stringstream text;
-    text << logFile.rdbuf();
-    r.output = text.str();
-    std::ifstream in(csv);
-    std::string line;
-    std::getline(in, line);
-    const std::vector<std::string> header = splitCsv(line);
-    while (std::getline(in, line)) {
-      const std::vector<std::string> fields = splitCsv(line);
+    r.run = runCli(STROMA_CLI, "check --stability --quick --csv \"" + csv.string() + "\"");
+    const auto table = readCsv(csv);
+    for (std::size_t i = 1; i < table.size(); ++i) {
       Row row;
-      for (std::size_t i = 0; i < header.size() && i < fields.size(); ++i)
-        row[header[i]] = fields[i];
+      for (std::size_t c = 0; c < table[0].size() && c < table[i].size(); ++c)
+        row[table[0][c]] = table[i][c];
       r.rows.push_back(row);
     }
     return r;
   }();
-  return run;
+  return suite;
 }
 
 std::string describe(const Row& row) {
@@ -84,11 +46,11 @@ std::string describe(const Row& row) {
 }
 
 TEST(StabilitySuite, EveryCaseEndsWithAnOutcome) {
-  const SuiteRun& run = quickSuite();
-  EXPECT_EQ(run.code, 0) << run.output;
+  const SuiteRun& suite = quickSuite();
+  EXPECT_EQ(suite.run.exitCode, 0) << suite.run.output;
   // 7 models x 6 solvers x 9 quick cases.
-  ASSERT_EQ(run.rows.size(), 7u * 6u * 9u) << run.output;
-  for (const Row& row : run.rows) {
+  ASSERT_EQ(suite.rows.size(), 7u * 6u * 9u) << suite.run.output;
+  for (const Row& row : suite.rows) {
     const std::string& status = row.at("status");
     EXPECT_TRUE(status == "stable" || status == "stalled" || status == "refused" ||
                 status == "diverged")

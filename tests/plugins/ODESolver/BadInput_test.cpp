@@ -2,15 +2,12 @@
 // Every ODE solver refuses a time step <= 0 and stops a run whose state becomes NaN or
 // infinite, with an error naming the step and the state; `stroma run` then exits with 1.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
 #include <limits>
-#include <sstream>
 
 #include "SolverTestSupport.h"
+#include "support/CliRun.h"
 
 namespace stroma::test {
 namespace {
@@ -97,17 +94,9 @@ TEST(EverySolverKind, WithoutAStateWarnsOnceThatItIntegratesNothing) {
 
 // `stroma run` on a scene that overflows at the first step, and on one with dt = 0.
 int runCli(const std::string& xml, std::string& output) {
-  TempDir dir;
-  const auto scene = dir.write("scene.scn", xml);
-  const auto log = dir.path() / "log.txt";
-  const std::string command = std::string("\"") + STROMA_CLI + "\" run \"" + scene.string() +
-                              "\" -n 5 > \"" + log.string() + "\" 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  output = text.str();
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const CliRun run = runScene(STROMA_CLI, xml, 5);
+  output = run.output;
+  return run.exitCode;
 }
 
 TEST(StromaRun, ExitsWith1WhenTheSimulationDiverges) {

@@ -4,13 +4,11 @@
 // onDivergence="stop" it is an error (the step fails, `stroma run` exits with 1); with "warn" a
 // single warning and the run goes on. A run that does not diverge reports nothing.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "SolverTestSupport.h"
+#include "support/CliRun.h"
 
 namespace stroma::test {
 namespace {
@@ -182,17 +180,9 @@ TEST(DivergenceMonitor, EnergyGrowthIsNotTakenForAnImpactOrALoad) {
 
 // `stroma run` on real components: exit code 1 in stop mode, 0 with a warning in warn mode.
 int runCli(const std::string& xml, int steps, std::string& output) {
-  TempDir dir;
-  const auto scene = dir.write("scene.scn", xml);
-  const auto log = dir.path() / "log.txt";
-  const std::string command = std::string("\"") + STROMA_CLI + "\" run \"" + scene.string() +
-                              "\" -n " + std::to_string(steps) + " > \"" + log.string() + "\" 2>&1";
-  const int status = std::system(command.c_str());
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  output = text.str();
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const CliRun run = runScene(STROMA_CLI, xml, steps);
+  output = run.output;
+  return run.exitCode;
 }
 
 // A chain of 6 points on springs, point 0 fixed, point 5 pulled 0.1 m off at the start.
