@@ -349,7 +349,8 @@ Vec3 HybridDecomposition::rowProduct(int node, const Eigen::VectorXd& u) const {
 }
 
 IterationReport HybridDecomposition::iterate() {
-  const Eigen::VectorXd before = m_u;
+  m_before = m_u;
+  const Eigen::VectorXd& before = m_before;
   if (m_condensed) {
     m_condensed->solve(m_f, m_u);
   } else if (m_options.iteration == InterfaceIteration::gaussSeidel) {
@@ -373,7 +374,9 @@ IterationReport HybridDecomposition::iterate() {
     for (int p : m_allInterfaceNodes)
       report.interfaceChange = std::max(report.interfaceChange, change(p));
   }
-  const Eigen::VectorXd residual = m_f - m_K * m_u;
+  m_residual.noalias() = m_K * m_u;
+  m_residual = m_f - m_residual;
+  const Eigen::VectorXd& residual = m_residual;
   double sum = 0;
   for (std::size_t p = 0; p < m_problem.points.size(); ++p)
     if (!m_fixed[p] && !m_imposed[p] && m_active[p])
@@ -394,47 +397,47 @@ void HybridDecomposition::updatePrecomputed(Zone& zone, Eigen::VectorXd& u) {
   const precomputed::DeformationBasis& basis = *zone.basis;
   // Forces on the basis nodes: the external ones; on the interface, those of the neighbours'
   // elements, f - K[i, R] u_R = f - (K u)_i + (A_stored u_N)_i (eq. 4.16, figure 4.12).
-  Eigen::VectorXd uN(3 * zone.nodes.size());
+  Zone::Scratch& s = zone.scratch;
+  s.uN.resize(3 * zone.nodes.size());
   for (std::size_t i = 0; i < zone.nodes.size(); ++i)
-    uN.segment<3>(3 * i) = u.segment<3>(3 * zone.nodes[i]);
-  const Eigen::VectorXd stored = zone.interfaceRows * uN;
-  std::vector<int> forceNodes, imposedNodes;
-  std::vector<Vec3> forces, imposed;
+    s.uN.segment<3>(3 * i) = u.segment<3>(3 * zone.nodes[i]);
+  s.stored.noalias() = zone.interfaceRows * s.uN;
+  s.forceNodes.clear();
+  s.imposedNodes.clear();
+  s.forces.clear();
+  s.imposed.clear();
   const std::vector<int>& basisNodes = basis.basisNodes();
   for (std::size_t b = 0; b < basisNodes.size(); ++b) {
     const int global = zone.nodes[basisNodes[b]];
     if (m_imposed[global]) {
-      imposedNodes.push_back(basisNodes[b]);
-      imposed.push_back(m_imposedValue[global]);  // not u's copy: no round-off drift
+      s.imposedNodes.push_back(basisNodes[b]);
+      s.imposed.push_back(m_imposedValue[global]);  // not u's copy: no round-off drift
       continue;
     }
     Vec3 f = m_f.segment<3>(3 * global);
     const int row = zone.interfaceRowOfBasisNode[b];
-    if (row >= 0) f += stored.segment<3>(3 * row) - rowProduct(global, u);
-    forceNodes.push_back(basisNodes[b]);
-    forces.push_back(f);
+    if (row >= 0) f += s.stored.segment<3>(3 * row) - rowProduct(global, u);
+    s.forceNodes.push_back(basisNodes[b]);
+    s.forces.push_back(f);
   }
-  Eigen::VectorXd local;
   std::string error;
-  bool solved = true;
-  if (imposedNodes.empty()) {
-    solved = basis.displacementFromForces(forceNodes, forces, local, error);
-  } else {
-    std::vector<Vec3> reactions;
-    solved = basis.displacementFromImposed(imposedNodes, imposed, local, reactions, error,
-                                           forceNodes, forces);
-  }
+  const bool solved =
+      s.imposedNodes.empty()
+          ? basis.displacementFromForces(s.forceNodes, s.forces, s.local, error)
+          : basis.displacementFromImposed(s.imposedNodes, s.imposed, s.local, s.reactions, error,
+                                          s.forceNodes, s.forces);
   if (!solved) return;  // sizes are consistent by construction; nothing to update otherwise
   const std::vector<int>& rows = basis.rowNodes();
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const int global = zone.nodes[rows[r]];
-    if (!m_fixed[global] && m_active[global]) u.segment<3>(3 * global) = local.segment<3>(3 * r);
+    if (!m_fixed[global] && m_active[global]) u.segment<3>(3 * global) = s.local.segment<3>(3 * r);
   }
 }
 
 void HybridDecomposition::updateTensorMass(Zone& zone, Eigen::VectorXd& u) {
   const std::size_t m = zone.freeNodes.size();
-  Eigen::VectorXd r(3 * m);
+  Eigen::VectorXd& r = zone.scratch.residual;
+  r.resize(3 * m);
   const auto computeResidual = [&] {
     for (std::size_t i = 0; i < m; ++i)
       r.segment<3>(3 * i) =
@@ -442,7 +445,8 @@ void HybridDecomposition::updateTensorMass(Zone& zone, Eigen::VectorXd& u) {
   };
   if (m_options.tensorMassSolve == TensorMassSolve::direct) {
     computeResidual();
-    const Eigen::VectorXd du = zone.factor->solve(r);
+    Eigen::VectorXd& du = zone.scratch.correction;
+    du = zone.factor->solve(r);
     for (std::size_t i = 0; i < m; ++i) u.segment<3>(3 * zone.freeNodes[i]) += du.segment<3>(3 * i);
     return;
   }

@@ -160,6 +160,12 @@ class HybridDecomposition {
     std::vector<double> inverseMass;
     Eigen::VectorXd velocity;
     double timeStep = 0;
+    /// Kept between iterations so that an iteration does not allocate.
+    struct Scratch {
+      Eigen::VectorXd uN, stored, local, residual, correction;
+      std::vector<int> forceNodes, imposedNodes;
+      std::vector<Vec3> forces, imposed, reactions;
+    } scratch;
   };
 
   bool checkLoads(const Loads& loads, std::string& error) const;
@@ -183,6 +189,7 @@ class HybridDecomposition {
   RowMajorMatrix m_K;                              ///< stiffness of the current mesh
   Eigen::VectorXd m_f;                             ///< external forces (3 n)
   Eigen::VectorXd m_u, m_work;                     ///< iterate; scratch of the Jacobi updates
+  Eigen::VectorXd m_before, m_residual;            ///< scratch of iterate()
   std::vector<char> m_fixed, m_imposed, m_active;  ///< per node
   std::vector<Vec3> m_imposedValue;                ///< per node (m)
   std::vector<int> m_owner;                        ///< per node: lowest zone holding it (Jacobi)

@@ -86,6 +86,22 @@ TEST(HybridDomainDecompositionSolver, TheBarReachesTheSingleDomainSolution) {
   EXPECT_EQ(s.text("@Bar/hybrid.currentZoneModels"), "precomputed precomputed precomputed");
 }
 
+TEST(HybridDomainDecompositionSolver, SchurIsExactInOneIterationAndMetisZonesConverge) {
+  SceneHolder s;
+  ASSERT_TRUE(
+      s.load(barScene(kThreeZones + R"(interfaceIteration="schur" iterationsPerStep="1")")));
+  ASSERT_TRUE(s.step());
+  double edge = 0;
+  const Eigen::VectorXd u = reference(s, edge);
+  EXPECT_LT(compareDisplacements(displacement(s), u).max, 1e-9 * edge);
+
+  SceneHolder t;
+  ASSERT_TRUE(t.load(barScene(R"(partition="metis" zoneCount="3" forceIndices="189" )"
+                              R"(forces="0 -0.01 0" iterationsPerStep="500")")));
+  ASSERT_TRUE(t.step(4));
+  EXPECT_LT(compareDisplacements(displacement(t), u).max, 1e-6 * edge);
+}
+
 TEST(HybridDomainDecompositionSolver, ACutConvertsItsZoneAndTheBarFollows) {
   SceneHolder s;
   ASSERT_TRUE(s.load(barScene(kThreeZones + R"(iterationsPerStep="100")",
