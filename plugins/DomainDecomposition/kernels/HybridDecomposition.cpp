@@ -471,7 +471,8 @@ bool HybridDecomposition::removeTetrahedra(const std::vector<int>& removed,
   }
   std::vector<Index> indices;
   for (int e : removed) {
-    if (e < 0 || static_cast<std::size_t>(e) >= m_tetrahedra.size() - indices.size()) {
+    if (e < 0 || indices.size() >= m_tetrahedra.size() ||
+        static_cast<std::size_t>(e) >= m_tetrahedra.size() - indices.size()) {
       error = "removed tetrahedron " + std::to_string(e) + " is out of range";
       return false;
     }
