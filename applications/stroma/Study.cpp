@@ -180,8 +180,9 @@ bool filterMatches(const StudyFilter& f, const StudyCombination& c) {
 /// Checks a filter's values against the axes, so that a misspelt value is not silently inert.
 bool checkFilter(const Study& s, const StudyFilter& f, const char* element, std::string& error) {
   for (const auto& [axisName, pattern] : f.values) {
+    const std::string wanted = axisName;  // lambdas may not capture structured bindings
     auto axis = std::find_if(s.axes.begin(), s.axes.end(),
-                             [&](const StudyAxis& a) { return a.name == axisName; });
+                             [&](const StudyAxis& a) { return a.name == wanted; });
     if (axis == s.axes.end()) {
       error = at(s, f.line,
                  std::string("<") + element + "> names axis '" + axisName +

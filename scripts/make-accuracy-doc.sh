@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Regenerates the tables and plots of docs/accuracy.md (issue 7 item 8): runs the studies of
+# bench/studies with `stroma bench` (full versions, one thread), keeps their CSV and PNG under
+# docs/accuracy/, and rewrites each table of docs/accuracy.md between its markers
+# <!-- BEGIN name --> and <!-- END name --> (the prose around them is written by hand).
+#
+#   scripts/make-accuracy-doc.sh [STROMA]     (default build/bin/stroma; about 10 minutes)
+#   scripts/make-accuracy-doc.sh --tables-only   (the tables again from docs/accuracy/*.csv)
+#
+# A study whose rows fail still gives its table (the status column says why); the script stops
+# only when a study cannot run at all (exit code 2) or python3 is missing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+stroma=${1:-build/bin/stroma}
+out=docs/accuracy
+mkdir -p "$out"
+command -v python3 >/dev/null || { echo "make-accuracy-doc: python3 is needed" >&2; exit 2; }
+
+studies="Cantilever TruthCube"
+[ "$stroma" = --tables-only ] && studies=""
+for study in $studies; do
+  code=0
+  "$stroma" bench "bench/studies/$study.xml" --output "$out" --threads 1 || code=$?
+  if [ "$code" -ge 2 ]; then echo "make-accuracy-doc: study $study did not run" >&2; exit 2; fi
+  # The gnuplot script and data beside the PNG name this machine's paths: the CSV is the data.
+  rm -f "$out/$study.png.gp" "$out/$study.png.dat"
+done
+
+python3 - "$out" docs/accuracy.md <<'PY'
+import csv, re, sys
+out, doc = sys.argv[1], sys.argv[2]
+
+def rows(study):
+    with open(f"{out}/{study}.csv", newline="") as f:
+        return list(csv.DictReader(f))
+
+def num(text, digits=3):
+    return f"{float(text):.{digits}g}" if text else "-"
+
+def cantilever():
+    """Per solver, models x resolutions: max tip error (% of the tip deflection) and wall time."""
+    r = rows("Cantilever")
+    resolutions = list(dict.fromkeys(x["resolution"] for x in r))
+    text = []
+    for solver in dict.fromkeys(x["solver"] for x in r):
+        text.append(f"\n**{solver}**: max tip error in % of the tip deflection (wall time of the "
+                    "steps, s)\n")
+        text.append("| model | " + " | ".join(resolutions) + " |")
+        text.append("|---" * (len(resolutions) + 1) + "|")
+        for model in dict.fromkeys(x["model"] for x in r if x["solver"] == solver):
+            cells = []
+            for res in resolutions:
+                hit = [x for x in r if x["model"] == model and x["solver"] == solver
+                       and x["resolution"] == res]
+                if not hit:
+                    cells.append("")
+                elif hit[0]["status"] != "ok":
+                    cells.append(hit[0]["status"])
+                else:
+                    cells.append(f"{100 * float(hit[0]['max_error']):.3g} ({num(hit[0]['wall_s'], 2)})")
+            text.append(f"| {model} | " + " | ".join(cells) + " |")
+    return "\n".join(text).strip("\n")
+
+def truthcube():
+    r = rows("TruthCube")
+    text = ["| model | cells | solver | 5 %: max / rms (mm) | 12.5 %: max / rms (mm) | wall (s) | steps/s |",
+            "|---|---|---|---|---|---|---|"]
+    for x in r:
+        if x["status"] != "ok":
+            text.append(f"| {x['model']} | {x['resolution']} | {x['solver']} | {x['status']} | | | |")
+            continue
+        text.append(f"| {x['model']} | {x['resolution']} | {x['solver']} | "
+                    f"{num(x['max_5pc_mm'])} / {num(x['rms_5pc_mm'])} | "
+                    f"{num(x['max_error'])} / {num(x['rms_error'])} | {num(x['wall_s'], 2)} | "
+                    f"{num(x['steps_per_s'], 3)} |")
+    return "\n".join(text)
+
+text = open(doc).read()
+for name, table in (("Cantilever", cantilever()), ("TruthCube", truthcube())):
+    pattern = re.compile(rf"<!-- BEGIN {name} -->.*?<!-- END {name} -->", re.S)
+    if not pattern.search(text):
+        sys.exit(f"make-accuracy-doc: {doc} has no markers for {name}")
+    text = pattern.sub(lambda m: f"<!-- BEGIN {name} -->\n{table}\n<!-- END {name} -->", text)
+open(doc, "w").write(text)
+print(f"Wrote {doc}")
+PY
