@@ -146,16 +146,8 @@ bool ReferenceComparison::prepareStateFile(const State::VecCoord& rest) {
       return false;
     }
   const std::size_t count = last.size();
-  std::vector<unsigned> points = d_indices.value();
-  if (points.empty())
-    for (unsigned i = 0; i < count; ++i) points.push_back(i);
-  for (unsigned i : points)
-    if (i >= count) {
-      msgError("index " + std::to_string(i) + " is out of range (the reference has " +
-                   std::to_string(count) + " points)",
-               "indices");
-      return false;
-    }
+  std::vector<unsigned> points;
+  if (!selectIndices(count, "reference's points", points)) return false;
 
   m_reportIndex = points;
   if (count == rest.size()) {  // the same points: compared by index
@@ -209,16 +201,8 @@ bool ReferenceComparison::prepareMarkers(const State::VecCoord& rest) {
     return false;
   }
   const std::size_t count = read[0].size();
-  std::vector<unsigned> markers = d_indices.value();
-  if (markers.empty())
-    for (unsigned i = 0; i < count; ++i) markers.push_back(i);
-  for (unsigned i : markers)
-    if (i >= count) {
-      msgError("index " + std::to_string(i) + " is out of range (the marker file has " +
-                   std::to_string(count) + " markers)",
-               "indices");
-      return false;
-    }
+  std::vector<unsigned> markers;
+  if (!selectIndices(count, "marker file's markers", markers)) return false;
   for (unsigned i : markers) m_target.push_back(read[0][i]);
   m_reportIndex = markers;
   if (locate) {
@@ -245,6 +229,21 @@ bool ReferenceComparison::prepareMarkers(const State::VecCoord& rest) {
     m_pointIndex.push_back(stateIndex[i]);
     m_rest.push_back(rest[stateIndex[i]]);
   }
+  return true;
+}
+
+bool ReferenceComparison::selectIndices(std::size_t count, const std::string& what,
+                                        std::vector<unsigned>& selected) {
+  selected = d_indices.value();
+  for (unsigned i : selected)
+    if (i >= count) {
+      msgError("index " + std::to_string(i) + " is out of range (" + std::to_string(count) + " " +
+                   what + ")",
+               "indices");
+      return false;
+    }
+  if (selected.empty())
+    for (unsigned i = 0; i < count; ++i) selected.push_back(i);
   return true;
 }
 

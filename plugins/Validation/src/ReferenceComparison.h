@@ -262,6 +262,8 @@ class ReferenceComparison final : public BehaviorModel,
   bool prepareAnalytic(const State::VecCoord& rest);
   bool prepareStateFile(const State::VecCoord& rest);
   bool prepareMarkers(const State::VecCoord& rest);
+  /// `indices` checked against `count` (what they index, for the message), or all of them.
+  bool selectIndices(std::size_t count, const std::string& what, std::vector<unsigned>& selected);
   bool locateInMesh(const State::VecCoord& rest, const std::vector<Vec3d>& points,
                     const std::string& field);
   /// Reference target of reference point k at time t (state-file references may change).

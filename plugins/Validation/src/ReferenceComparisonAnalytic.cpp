@@ -26,23 +26,19 @@ bool ReferenceComparison::prepareAnalytic(const State::VecCoord& rest) {
   const Vec3d axis = d_axis.value().normalized();
 
   // Compared points: `indices`, else all (cantileverTip: those of the free end's section).
-  std::vector<unsigned> points = d_indices.value();
-  for (unsigned i : points)
-    if (i >= n) {
-      msgError("index " + std::to_string(i) + " is out of range (the state has " +
-                   std::to_string(n) + " points)",
-               "indices");
-      return false;
-    }
-  if (points.empty())
-    for (unsigned i = 0; i < n; ++i)
-      if (kind != AnalyticReference::cantileverTip ||
-          std::abs((rest[i] - origin).dot(axis) - d_length.value()) <= 1e-6 * d_length.value())
-        points.push_back(i);
+  std::vector<unsigned> points;
+  if (!selectIndices(n, "state points", points)) return false;
+  if (kind == AnalyticReference::cantileverTip && d_indices.value().empty())
+    std::erase_if(points, [&](unsigned i) {
+      return std::abs((rest[i] - origin).dot(axis) - d_length.value()) > 1e-6 * d_length.value();
+    });
   if (points.empty()) {
-    msgError("no state point lies at the free end (distance length = " +
-                 formatNumber(d_length.value()) + " from origin along axis): set indices",
-             "length");
+    if (kind == AnalyticReference::cantileverTip)
+      msgError("no state point lies at the free end (distance length = " +
+                   formatNumber(d_length.value()) + " from origin along axis): set indices",
+               "length");
+    else
+      msgError("the state has no point", "state");
     return false;
   }
   m_pointIndex = m_reportIndex = points;
