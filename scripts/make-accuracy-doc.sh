@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Regenerates the tables and plots of docs/accuracy.md (issue 7 item 8): runs the studies of
-# bench/studies with `stroma bench` (full versions, one thread), keeps their CSV and PNG under
+# bench/studies (Cantilever, TruthCube, UniaxialBlock) with `stroma bench` (full versions, one thread), keeps their CSV and PNG under
 # docs/accuracy/, and rewrites each table of docs/accuracy.md between its markers
 # <!-- BEGIN name --> and <!-- END name --> (the prose around them is written by hand).
 #
@@ -17,7 +17,7 @@ out=docs/accuracy
 mkdir -p "$out"
 command -v python3 >/dev/null || { echo "make-accuracy-doc: python3 is needed" >&2; exit 2; }
 
-studies="Cantilever TruthCube"
+studies="Cantilever TruthCube UniaxialBlock"
 [ "$stroma" = --tables-only ] && studies=""
 for study in $studies; do
   code=0
@@ -76,8 +76,18 @@ def truthcube():
                     f"{num(x['steps_per_s'], 3)} |")
     return "\n".join(text)
 
+def block():
+    r = rows("UniaxialBlock")
+    text = ["| model | cells | to neo-Hookean | to linear | to StVK | status |",
+            "|---|---|---|---|---|---|"]
+    for x in r:
+        text.append(f"| {x['model']} | {x['resolution']} | {num(x['max_error'], 2)} | "
+                    f"{num(x['vs_linear'], 2)} | {num(x['vs_stvk'], 2)} | {x['status']} |")
+    return "\n".join(text)
+
 text = open(doc).read()
-for name, table in (("Cantilever", cantilever()), ("TruthCube", truthcube())):
+for name, table in (("Cantilever", cantilever()), ("TruthCube", truthcube()),
+                    ("UniaxialBlock", block())):
     pattern = re.compile(rf"<!-- BEGIN {name} -->.*?<!-- END {name} -->", re.S)
     if not pattern.search(text):
         sys.exit(f"make-accuracy-doc: {doc} has no markers for {name}")
