@@ -6,7 +6,7 @@
 namespace stroma::multigrid {
 
 void MultigridCycle::setOperators(const SparseMatrix& A0, const std::vector<SparseMatrix>& P,
-                                  bool patternChanged) {
+                                  bool patternChanged, bool updateCoarse) {
   m_A0 = &A0;
   m_P.clear();
   for (const SparseMatrix& p : P) m_P.push_back(&p);
@@ -17,7 +17,10 @@ void MultigridCycle::setOperators(const SparseMatrix& A0, const std::vector<Spar
     m_PT.resize(P.size());
     for (std::size_t l = 0; l < P.size(); ++l) m_PT[l] = P[l].transpose();
     m_directAnalyzed = false;
+    updateCoarse = true;
   }
+  if (!updateCoarse) return;
+  m_directFactorized = false;
   // Galerkin operators, finest to coarsest.
   for (std::size_t l = 0; l < P.size(); ++l) {
     const SparseMatrix& fine = l == 0 ? A0 : m_coarse[l - 1];
@@ -29,7 +32,11 @@ void MultigridCycle::setOperators(const SparseMatrix& A0, const std::vector<Spar
 int MultigridCycle::conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b,
                                       Eigen::VectorXd& x, int iterations, double tolerance,
                                       Eigen::VectorXd& r, Eigen::VectorXd& p, Eigen::VectorXd& q) {
-  r.noalias() = b - A * x;
+  // Coarse corrections and preconditioning start from zero: r = b without a product.
+  if ((x.array() == 0).all())
+    r = b;
+  else
+    r.noalias() = b - A * x;
   const double stop = tolerance * tolerance * b.squaredNorm();
   double rho = r.squaredNorm();
   if (rho <= stop || rho == 0) return 0;
@@ -61,15 +68,20 @@ void MultigridCycle::solveCoarsest(Eigen::VectorXd& x, const Eigen::VectorXd& b,
     conjugateGradient(A, b, x, settings.coarseIterations, 1e-12, w.r, w.p, w.q);
     return;
   }
-  // Coarse unknowns that interpolate only fixed points have a zero row: 1 on their diagonal.
-  m_coarsestRegular = A;
-  for (Eigen::Index i = 0; i < A.rows(); ++i)
-    if (m_coarsestRegular.coeff(i, i) == 0) m_coarsestRegular.coeffRef(i, i) = 1;
-  if (!m_directAnalyzed) {
-    m_direct.analyzePattern(m_coarsestRegular);
-    m_directAnalyzed = true;
+  // Factorized once per operator update (every cycle of every solve until the next update
+  // uses the same factors).
+  if (!m_directFactorized) {
+    // Coarse unknowns that interpolate only fixed points have a zero row: 1 on their diagonal.
+    m_coarsestRegular = A;
+    for (Eigen::Index i = 0; i < A.rows(); ++i)
+      if (m_coarsestRegular.coeff(i, i) == 0) m_coarsestRegular.coeffRef(i, i) = 1;
+    if (!m_directAnalyzed) {
+      m_direct.analyzePattern(m_coarsestRegular);
+      m_directAnalyzed = true;
+    }
+    m_direct.factorize(m_coarsestRegular);
+    m_directFactorized = true;
   }
-  m_direct.factorize(m_coarsestRegular);
   if (m_direct.info() == Eigen::Success) {
     x = m_direct.solve(b);
   } else {
@@ -87,11 +99,12 @@ void MultigridCycle::vCycle(int level, Eigen::VectorXd& x, const Eigen::VectorXd
   Work& w = m_work[level];
   const SparseMatrix& A = matrix(level);
   const SparseMatrix& P = *m_P[level];
-  // 1. pre-smoothing
+  // 1. pre-smoothing; CG leaves the residual b - A x in w.r (updated recursively, which is
+  // the true residual to round-off after a few iterations), so the restriction needs no
+  // further product with A.
   conjugateGradient(A, b, x, settings.smoothingIterations, 0.0, w.r, w.p, w.q);
   // 2. restriction of the residual
-  w.residual.noalias() = b - A * x;
-  w.coarseRhs.noalias() = m_PT[level] * w.residual;
+  w.coarseRhs.noalias() = m_PT[level] * w.r;
   // 3. coarse correction from zero
   w.coarseX.setZero(P.cols());
   vCycle(level + 1, w.coarseX, w.coarseRhs, settings);
@@ -115,6 +128,53 @@ void MultigridCycle::fullCycle(Eigen::VectorXd& x, const Eigen::VectorXd& b,
     current.swap(finer);
   }
   x = current;
+}
+
+void MultigridCycle::precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z, bool full,
+                                  const CycleSettings& settings) {
+  z.setZero(r.size());
+  if (full)
+    fullCycle(z, r, settings);
+  else
+    vCycle(0, z, r, settings);
+}
+
+int MultigridCycle::flexibleConjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b,
+                                              Eigen::VectorXd& x, int iterations,
+                                              double tolerance, bool full,
+                                              const CycleSettings& settings, double& residual) {
+  const double normB = b.norm();
+  if ((x.array() == 0).all())
+    m_r = b;
+  else
+    m_r.noalias() = b - A * x;
+  residual = normB > 0 ? m_r.norm() / normB : 0;
+  if (normB == 0 || residual <= tolerance) return 0;
+  precondition(m_r, m_z, full, settings);
+  m_d = m_z;
+  double rz = m_r.dot(m_z);
+  int done = 0;
+  while (done < iterations) {
+    m_q.noalias() = A * m_d;
+    const double den = m_d.dot(m_q);
+    if (!(den > 0) || !(rz > 0)) break;  // converged to round-off, or not positive definite
+    const double alpha = rz / den;
+    x += alpha * m_d;
+    m_previousR = m_r;
+    m_r -= alpha * m_q;
+    ++done;
+    residual = m_r.norm() / normB;
+    if (!std::isfinite(residual) || residual <= tolerance || done >= iterations) return done;
+    precondition(m_r, m_z, full, settings);
+    // Polak-Ribiere: beta = z_{k+1} . (r_{k+1} - r_k) / (z_k . r_k).
+    const double beta = m_z.dot(m_r - m_previousR) / rz;
+    rz = m_r.dot(m_z);
+    m_d = m_z + beta * m_d;
+  }
+  // Stopped early: the residual of the x returned.
+  m_r.noalias() = b - A * x;
+  residual = m_r.norm() / normB;
+  return done;
 }
 
 }  // namespace stroma::multigrid

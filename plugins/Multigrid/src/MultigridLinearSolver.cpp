@@ -127,14 +127,21 @@ LinearSolveReport MultigridLinearSolver::solve(MechanicalOperations& mop,
   const Eigen::SparseMatrix<double>& A = m_matrix.matrix();
   {
     ScopedPhase setup(mop.timing(), "multigridSetup");
-    m_cycle.setOperators(A, m_P, patternChanged);
+    const int interval = d_coarseUpdateInterval.value();
+    const bool update = patternChanged || m_solvesSinceUpdate == 0 ||
+                        (interval > 0 && m_solvesSinceUpdate >= interval);
+    m_cycle.setOperators(A, m_P, patternChanged, update);
+    m_solvesSinceUpdate = update ? 1 : m_solvesSinceUpdate + 1;
   }
 
   mop.gather(rhs, m_rhs);
   LinearSolveReport report;
   const double normB = m_rhs.norm();
-  m_solution.setZero(m_rhs.size());
+  const bool warm = d_warmStart.value() && m_solution.size() == m_rhs.size() &&
+                    m_solution.allFinite() && !patternChanged;
+  if (!warm) m_solution.setZero(m_rhs.size());
   if (normB == 0) {
+    m_solution.setZero(m_rhs.size());
     mop.scatter(m_solution, x);
     this->report(report);
     return report;
@@ -146,28 +153,20 @@ LinearSolveReport MultigridLinearSolver::solve(MechanicalOperations& mop,
   settings.postSmoothing = d_postSmoothing.value();
   report.converged = false;
   if (d_conjugateGradient.value())
-    iterateConjugateGradient(A, normB, settings, report);
+    iterateConjugateGradient(A, settings, report);
   else
-    iterateCycles(A, normB, settings, report);
+    iterateCycles(A, normB, warm, settings, report);
   mop.scatter(m_solution, x);
   this->report(report);
   return report;
 }
 
-void MultigridLinearSolver::precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z,
-                                         const multigrid::CycleSettings& settings) {
-  z.setZero(r.size());
-  if (d_cycle.value() == MultigridCycleKind::full)
-    m_cycle.fullCycle(z, r, settings);
-  else
-    m_cycle.vCycle(0, z, r, settings);
-}
-
 void MultigridLinearSolver::iterateCycles(const Eigen::SparseMatrix<double>& A, double normB,
-                                          const multigrid::CycleSettings& settings,
+                                          bool warm, const multigrid::CycleSettings& settings,
                                           LinearSolveReport& report) {
   while (report.iterations < d_iterations.value()) {
-    if (report.iterations == 0 && d_cycle.value() == MultigridCycleKind::full)
+    // A full cycle starts from zero: after a warm start, V-cycles improve the start instead.
+    if (report.iterations == 0 && d_cycle.value() == MultigridCycleKind::full && !warm)
       m_cycle.fullCycle(m_solution, m_rhs, settings);
     else
       m_cycle.vCycle(0, m_solution, m_rhs, settings);
@@ -183,39 +182,11 @@ void MultigridLinearSolver::iterateCycles(const Eigen::SparseMatrix<double>& A, 
 }
 
 void MultigridLinearSolver::iterateConjugateGradient(const Eigen::SparseMatrix<double>& A,
-                                                     double normB,
                                                      const multigrid::CycleSettings& settings,
                                                      LinearSolveReport& report) {
-  // Flexible preconditioned CG from x = 0: r = b, z = M(r), p = z.
-  m_residual = m_rhs;
-  precondition(m_residual, m_z, settings);
-  m_direction = m_z;
-  double rz = m_residual.dot(m_z);
-  while (report.iterations < d_iterations.value()) {
-    m_product.noalias() = A * m_direction;
-    const double den = m_direction.dot(m_product);
-    if (!(den > 0) || !(rz > 0)) break;  // converged to round-off, or not positive definite
-    const double alpha = rz / den;
-    m_solution += alpha * m_direction;
-    m_previousResidual = m_residual;
-    m_residual -= alpha * m_product;
-    ++report.iterations;
-    report.residual = m_residual.norm() / normB;
-    if (!std::isfinite(report.residual)) return;
-    if (report.residual <= d_tolerance.value()) {
-      report.converged = true;
-      return;
-    }
-    if (report.iterations >= d_iterations.value()) return;
-    precondition(m_residual, m_z, settings);
-    // Polak-Ribiere: beta = z_{k+1} . (r_{k+1} - r_k) / (z_k . r_k).
-    const double beta = m_z.dot(m_residual - m_previousResidual) / rz;
-    rz = m_residual.dot(m_z);
-    m_direction = m_z + beta * m_direction;
-  }
-  // Stopped early: the residual of the current x.
-  m_residual.noalias() = m_rhs - A * m_solution;
-  report.residual = m_residual.norm() / normB;
+  report.iterations = m_cycle.flexibleConjugateGradient(
+      A, m_rhs, m_solution, d_iterations.value(), d_tolerance.value(),
+      d_cycle.value() == MultigridCycleKind::full, settings, report.residual);
   report.converged = report.residual <= d_tolerance.value();
 }
 

@@ -87,6 +87,20 @@ class MultigridLinearSolver final : public LinearSolver {
                                  "Use each cycle (from zero) as the preconditioner of an outer "
                                  "flexible conjugate gradient: an iteration is then one cycle and "
                                  "one product with A."};
+  Data<int> d_coarseUpdateInterval{
+      this,
+      "coarseUpdateInterval",
+      1,
+      "Recompute the Galerkin coarse operators every this many solves (1: every solve; 0: only "
+      "when the grid or the fixed set changes). Between updates the coarse levels keep the "
+      "operators of an earlier matrix: for a corotational model a slightly stale "
+      "preconditioner, which the outer conjugateGradient absorbs; the fine level always uses "
+      "the current matrix.",
+      {.min = 0.0}};
+  Data<bool> d_warmStart{this, "warmStart", false,
+                         "Start each solve from the previous solve's solution instead of zero "
+                         "(an implicit step's velocity change varies slowly from step to "
+                         "step)."};
   Link<Topology> l_topology{this, "topology",
                             "Topology whose hexahedra are the fine grid (default: the one at or "
                             "above the solved state's node)."};
@@ -108,13 +122,10 @@ class MultigridLinearSolver final : public LinearSolver {
   /// Builds the grids and P when the topology changed; false (with an error) on bad input.
   bool prepareGrids(MechanicalOperations& mop);
   LinearSolveReport fail(MechanicalOperations& mop, VecId x);
-  /// z = one cycle on A z = r from z = 0.
-  void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z,
-                    const multigrid::CycleSettings& settings);
   /// Stationary cycles (x += cycle correction) or flexible CG preconditioned by a cycle.
-  void iterateCycles(const Eigen::SparseMatrix<double>& A, double normB,
+  void iterateCycles(const Eigen::SparseMatrix<double>& A, double normB, bool warm,
                      const multigrid::CycleSettings& settings, LinearSolveReport& report);
-  void iterateConjugateGradient(const Eigen::SparseMatrix<double>& A, double normB,
+  void iterateConjugateGradient(const Eigen::SparseMatrix<double>& A,
                                 const multigrid::CycleSettings& settings,
                                 LinearSolveReport& report);
   void report(const LinearSolveReport& r);
@@ -129,8 +140,8 @@ class MultigridLinearSolver final : public LinearSolver {
   bool m_gridsReady = false;
   bool m_reportedBadInput = false;
   Eigen::VectorXd m_rhs, m_solution, m_residual;
-  Eigen::VectorXd m_z, m_direction, m_product, m_previousResidual;
   long long m_unconverged = 0, m_solves = 0;
+  int m_solvesSinceUpdate = 0;  ///< solves since the coarse operators were computed
 };
 
 }  // namespace stroma
