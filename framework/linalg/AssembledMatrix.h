@@ -53,13 +53,13 @@ class AssembledMatrix final : public MatrixAccumulator {
   void buildPattern();
 
   std::size_t m_size = 0;
-  bool m_built = false;           ///< m_items and m_slots describe m_matrix
-  bool m_refilling = false;       ///< adding into the slots of the recorded sequence
-  std::size_t m_cursor = 0;       ///< next item of the recorded sequence
-  std::vector<Item> m_items;      ///< the recorded sequence
-  std::vector<int> m_slots;       ///< 3 per item: value index of (row, col + j), j = 0..2
-  std::vector<Item> m_newItems;   ///< recording: the sequence of this assembly
-  std::vector<double> m_values;   ///< recording: 1 or 9 (row-major) values per new item
+  bool m_built = false;                   ///< m_items and m_slots describe m_matrix
+  bool m_refilling = false;               ///< adding into the slots of the recorded sequence
+  std::size_t m_cursor = 0;               ///< next item of the recorded sequence
+  std::vector<Item> m_items;              ///< the recorded sequence
+  std::vector<int> m_slots;               ///< 3 per item: value index of (row, col + j), j = 0..2
+  std::vector<Item> m_newItems;           ///< recording: the sequence of this assembly
+  std::vector<double> m_values;           ///< recording: 1 or 9 (row-major) values per new item
   Eigen::SparseMatrix<double> m_carried;  ///< values added before the sequence changed
   Eigen::SparseMatrix<double> m_matrix;
   std::uint64_t m_patternRevision = 0;

@@ -140,9 +140,9 @@ void MultigridCycle::precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z, 
 }
 
 int MultigridCycle::flexibleConjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b,
-                                              Eigen::VectorXd& x, int iterations,
-                                              double tolerance, bool full,
-                                              const CycleSettings& settings, double& residual) {
+                                              Eigen::VectorXd& x, int iterations, double tolerance,
+                                              bool full, const CycleSettings& settings,
+                                              double& residual) {
   const double normB = b.norm();
   if ((x.array() == 0).all())
     m_r = b;

@@ -44,8 +44,8 @@ class MultigridCycle {
   /// `patternChanged` when P changed since the last call (the direct coarse solver then redoes
   /// its symbolic analysis). Without `updateCoarse` (and with an unchanged pattern), the coarse
   /// operators of the last update are kept: only A0 is new.
-  void setOperators(const SparseMatrix& A0, const std::vector<SparseMatrix>& P,
-                    bool patternChanged, bool updateCoarse = true);
+  void setOperators(const SparseMatrix& A0, const std::vector<SparseMatrix>& P, bool patternChanged,
+                    bool updateCoarse = true);
 
   /// Number of levels, fine one included.
   int levels() const { return int(m_P.size()) + 1; }
@@ -64,8 +64,8 @@ class MultigridCycle {
   /// cycles, e.g. when they are stale). Stops after `iterations` or at a relative residual
   /// ||b - A x|| / ||b|| <= tolerance. Returns the iterations; `residual` is the relative
   /// residual of the x returned.
-  int flexibleConjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b,
-                                Eigen::VectorXd& x, int iterations, double tolerance, bool full,
+  int flexibleConjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                                int iterations, double tolerance, bool full,
                                 const CycleSettings& settings, double& residual);
 
   /// `iterations` CG iterations on A x = b from x; stops earlier when ||r|| <= tolerance ||b||
@@ -95,7 +95,7 @@ class MultigridCycle {
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> m_direct;
   bool m_directAnalyzed = false;
   bool m_directFactorized = false;  ///< m_direct holds the factors of the current A_L
-  SparseMatrix m_coarsestRegular;  ///< A_L with 1 on zero diagonals, for the direct solve
+  SparseMatrix m_coarsestRegular;   ///< A_L with 1 on zero diagonals, for the direct solve
 };
 
 }  // namespace stroma::multigrid

@@ -2,13 +2,13 @@
 // AssembledMatrix: entries and 3x3 blocks sum up like a dense matrix; a repeated sequence of
 // calls refills the same pattern in place (patternRevision unchanged); a sequence that changes
 // in the middle, ends early or goes on longer gives the same matrix as a fresh assembly.
+#include "linalg/AssembledMatrix.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 #include <random>
 #include <vector>
-
-#include "linalg/AssembledMatrix.h"
 
 namespace stroma::test {
 namespace {

@@ -227,7 +227,8 @@ TEST(MultigridLinearSolver, StaleCoarseOperatorsAndWarmStartFollowSparseLDL) {
     for (int n = 0; n < 20; ++n) {
       EXPECT_TRUE(s.scene->step()) << s.log();
       if (iterations)
-        *iterations += std::stoi(s.body().findObject("mg")->findData("lastIterations")->valueText());
+        *iterations +=
+            std::stoi(s.body().findObject("mg")->findData("lastIterations")->valueText());
     }
     EXPECT_EQ(s.log(), "");
     return s.body().get<MechanicalState<Vec3Types>>()->readCoord(VecId::position());
@@ -239,13 +240,14 @@ TEST(MultigridLinearSolver, StaleCoarseOperatorsAndWarmStartFollowSparseLDL) {
   int fresh = 0, stale = 0, staleWarm = 0, everyFive = 0;
   const std::vector<Vec3d> a = run(fcg + "/>", &fresh);
   const std::vector<Vec3d> b = run(fcg + "coarseUpdateInterval=\"0\"/>", &stale);
-  const std::vector<Vec3d> c = run(fcg + "coarseUpdateInterval=\"0\" warmStart=\"true\"/>",
-                                   &staleWarm);
+  const std::vector<Vec3d> c =
+      run(fcg + "coarseUpdateInterval=\"0\" warmStart=\"true\"/>", &staleWarm);
   const std::vector<Vec3d> d =
       run(fcg + "coarseUpdateInterval=\"5\" warmStart=\"true\"/>", &everyFive);
-  std::printf("flexible CG iterations over 20 steps: fresh %d, stale %d, stale + warm %d, "
-              "every 5 + warm %d\n",
-              fresh, stale, staleWarm, everyFive);
+  std::printf(
+      "flexible CG iterations over 20 steps: fresh %d, stale %d, stale + warm %d, "
+      "every 5 + warm %d\n",
+      fresh, stale, staleWarm, everyFive);
   double tipDrop = 0;
   for (const Vec3d& p : ldl) tipDrop = std::max(tipDrop, -p.y());
   EXPECT_GT(tipDrop, 1e-3);  // the beam bent (and rotated its elements)
