@@ -419,6 +419,29 @@ TEST(VolumetricLocking, NodalPressureGivesTheSameBitsOnOneAndTwoThreads) {
   EXPECT_EQ(std::memcmp(one.data(), two.data(), one.size() * sizeof(double)), 0);
 }
 
+TEST(VolumetricLocking, ForcesTurnWithTheBody) {
+  // Frame indifference of the corotational forms: the positions of a deformed state turned by
+  // Q and moved give the forces turned by Q (each element's rotation becomes Q R_e, its
+  // corotated strain and divergence stay), to round-off.
+  const FemMesh mesh = smallMesh();
+  const std::vector<Vec3d> x = deformed(mesh);
+  const Eigen::Matrix3d Q =
+      Eigen::AngleAxisd(2.1, Vec3d(0.3, -1, 0.6).normalized()).toRotationMatrix();
+  std::vector<Vec3d> turned = x;
+  for (Vec3d& p : turned) p = Q * p + Vec3d(1, -2, 0.5);
+  for (const char* elements : {"tetrahedra", "hexahedra"}) {
+    for (const char* method : {"large", "polar", "svd"}) {
+      const std::string xml = lockingFreeScene(elements, method);
+      const Eigen::VectorXd f = forcesAt(xml, x), fTurned = forcesAt(xml, turned);
+      ASSERT_GT(f.norm(), 0);
+      Eigen::VectorXd expected(f.size());
+      for (Eigen::Index i = 0; i < f.size() / 3; ++i)
+        expected.segment<3>(3 * i) = Q * f.segment<3>(3 * i);
+      EXPECT_LT((fTurned - expected).norm(), 1e-12 * f.norm()) << elements << " " << method;
+    }
+  }
+}
+
 // --- Bad input -------------------------------------------------------------------------------
 
 TEST(VolumetricLocking, AKeywordTheElementDoesNotOfferIsAnErrorNamingTheField) {
