@@ -2,6 +2,7 @@
 #include "AveragedNodalPressure.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "SolidMechanics/kernels/VolumetricSplit.h"
 
