@@ -281,6 +281,26 @@ void PrecomputedLinearModel::solve(MechanicalOperations& mop, double dt) {
   }
   mop.freeVec(f);
 
+  // The imposed set may change while running (a tool grasping other nodes): the kernel
+  // refactorises the imposed compliance when it does.
+  const auto& indices = d_imposedIndices.value();
+  if (!std::equal(indices.begin(), indices.end(), m_imposedNodes.begin(), m_imposedNodes.end())) {
+    m_imposedNodes.assign(indices.begin(), indices.end());
+    m_imposed.resize(m_imposedNodes.size());
+  }
+  const size_t keys = std::max<size_t>(1, d_keyTimes.value().size());
+  if (d_imposedDisplacements.value().size() != keys * m_imposedNodes.size()) {
+    if (!m_warnedSolve)
+      msgWarning("step not solved, positions unchanged: " +
+                     std::to_string(d_imposedDisplacements.value().size()) +
+                     " imposed displacements for " + std::to_string(m_imposedNodes.size()) +
+                     " imposedIndices and " + std::to_string(d_keyTimes.value().size()) +
+                     " keyTimes",
+                 "imposedDisplacements");
+    m_warnedSolve = true;
+    return;
+  }
+
   // u by superposition, through the imposed nodes' compliance when there are some.
   std::string error;
   bool solved;

@@ -128,6 +128,34 @@ TEST_F(PrecomputedLinearModelTest, ImposedDisplacementsFollowTheirKeyTimes) {
   EXPECT_LT(total.z(), 0);
 }
 
+TEST_F(PrecomputedLinearModelTest, TheImposedSetCanChangeWhileRunning) {
+  Runtime rt;
+  Scene s(rt);
+  ASSERT_TRUE(loadQuietly(s, femScene(bar(), "tetrahedra",
+                                      model("useCache=\"false\" imposedIndices=\"80\" "
+                                            "imposedDisplacements=\"0 0 -0.01\"") +
+                                          fixed())));
+  ASSERT_TRUE(s.step());
+  EXPECT_NEAR(positions(s)[80].z() - 1, -0.01, 1e-12);
+  // A tool grasping a second node: both reach their values.
+  auto* model = objectAt<Base>(s, "/body/model");
+  std::string error;
+  ASSERT_TRUE(model->findData("imposedIndices")->read("80 44", error)) << error;
+  ASSERT_TRUE(model->findData("imposedDisplacements")->read("0 0 -0.01  0.002 0 0", error));
+  ASSERT_TRUE(s.step());
+  EXPECT_NEAR(positions(s)[80].z() - 1, -0.01, 1e-12);
+  EXPECT_NEAR(positions(s)[44].x() - bar().points[44].x(), 0.002, 1e-12);
+  // A count that does not match: a warning naming the field, positions kept.
+  const auto before = positions(s);
+  ASSERT_TRUE(model->findData("imposedIndices")->read("80", error));
+  ASSERT_TRUE(s.step());
+  EXPECT_EQ(positions(s), before);
+  bool warned = false;
+  for (const Message& m : s.log().messages())
+    warned = warned || (m.level == MessageLevel::warning && m.field == "imposedDisplacements");
+  EXPECT_TRUE(warned);
+}
+
 TEST_F(PrecomputedLinearModelTest, SurfaceRegionMovesTheSurfaceAsTheWholeModel) {
   const std::string load = "<ConstantForceField indices=\"80\" forces=\"0 100 -300\"/>";
   Runtime rt1, rt2;
