@@ -3,7 +3,8 @@
 # Makes the reference state files of this folder: converged fine-mesh runs of the scenes here,
 # by `stroma run --export-state`, each file headed by the exact command that made it (comment
 # lines after the format line). Run from anywhere; STROMA names the stroma binary (default:
-# build/bin/stroma of the repository). See README.md for what each file holds.
+# build/bin/stroma of the repository). See README.md for what each file holds. With ccx
+# installed and no scene named, it also remakes calculix/*.state (calculix/cantilever_ccx.py).
 #
 #   share/reference/make_references.sh            # all of them
 #   STROMA=build-release/bin/stroma share/reference/make_references.sh CantileverSmallHexa
@@ -35,3 +36,15 @@ echo "$runs" | while read -r scene steps every; do
     tail -n +2 "$out.tmp"; } > "$out"
   rm -f "$out.tmp"
 done
+
+# CalculiX's runs of the same cantilevers (independent code), when ccx is installed
+# (Debian calculix-ccx) and no scene was named.
+if [ $# -eq 0 ]; then
+  if command -v ccx >/dev/null 2>&1; then
+    python3 "$here/calculix/cantilever_ccx.py" --output "$here/calculix/CantileverSmallCalculix.state"
+    python3 "$here/calculix/cantilever_ccx.py" --cells 60 6 6 --load 1666.6667 --nlgeom \
+      --output "$here/calculix/CantileverLargeCalculix.state"
+  else
+    echo "make_references.sh: no ccx (calculix-ccx): the CalculiX references were not remade" >&2
+  fi
+fi
