@@ -74,6 +74,16 @@ void ReferenceComparison::bwdInit() {
     msgError("no point to compare", "indices");
     return;
   }
+  // The state size the comparison needs: a state that shrinks while running (cutting) is
+  // reported instead of read out of range.
+  m_requiredSize = 0;
+  if (m_location.empty())
+    for (unsigned i : m_pointIndex) m_requiredSize = std::max<std::size_t>(m_requiredSize, i + 1);
+  for (const auto& e : m_location)
+    for (int j = 0; j < e.count; ++j)
+      m_requiredSize =
+          std::max<std::size_t>(m_requiredSize, e.nodes[static_cast<std::size_t>(j)] + 1);
+  m_sizeWarned = false;
   m_ready = true;
   setDirty();
 }
@@ -297,6 +307,18 @@ bool ReferenceComparison::updateTargets(double time) {
 void ReferenceComparison::compareNow(double time) {
   updateTargets(time);
   const State::VecCoord& x = l_state->readCoord(VecId::position());
+  if (x.size() < m_requiredSize) {
+    if (!m_sizeWarned)
+      msgWarning("the state now has " + std::to_string(x.size()) + " points and the reference " +
+                     "needs " + std::to_string(m_requiredSize) +
+                     ": no comparison (NaN) from time " + formatNumber(time),
+                 "state");
+    m_sizeWarned = true;
+    const Comparison none{time, kNaN, kNaN, -1};
+    m_history.push_back(none);
+    publish(none);
+    return;
+  }
   const Vec3d load = d_loadDirection.value().normalized();
   const std::size_t count = m_location.empty() ? m_pointIndex.size() : m_location.size();
   double sumSquares = 0, largest = -1;

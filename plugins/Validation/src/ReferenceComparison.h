@@ -271,7 +271,9 @@ class ReferenceComparison final : public BehaviorModel,
   void compareNow(double time);
   void publish(const Comparison& c);
 
-  bool m_checked = false;  ///< init found the parameters usable
+  bool m_checked = false;          ///< init found the parameters usable
+  std::size_t m_requiredSize = 0;  ///< state points the comparison reads
+  bool m_sizeWarned = false;
   bool m_ready = false;
   /// Reference points: the state point each compares with (by index), or its location.
   std::vector<unsigned> m_pointIndex;

@@ -151,6 +151,20 @@ TEST(ReferenceComparison, ComparesAtTheGivenTimesAndSummarizesThem) {
   EXPECT_NE(lines[2].find("time 5 s not reached"), std::string::npos) << lines[2];
 }
 
+TEST(ReferenceComparison, StateThatShrinksIsReportedNotReadOutOfRange) {
+  const FemMesh mesh = makeMacNealHarderPatch();
+  Runtime runtime;
+  Scene scene(runtime);
+  ASSERT_TRUE(loadQuietly(scene, bodyScene(mesh, "hexahedra", mesh.points,
+                                           "<ReferenceComparison name=\"compare\" "
+                                           "analytic=\"patch\" referenceLength=\"1\"/>")));
+  // As a cut would: the state loses points the comparison reads.
+  dofs(scene)->writeCoord(VecId::position()).resize(10);
+  objectAt<BehaviorModel>(scene, "/body/compare")->updatePosition(1);
+  EXPECT_TRUE(std::isnan(comparisonOutput(scene, "maxError")));
+  EXPECT_EQ(scene.log().count(MessageLevel::warning), 1u);
+}
+
 // --- Cantilever: convergence in mesh size ------------------------------------------------------
 
 /// Relative RMS error of the tip face's deflection against Timoshenko (REFERENCES.md: L = 1 m,
