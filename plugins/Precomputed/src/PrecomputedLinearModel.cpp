@@ -106,9 +106,7 @@ bool PrecomputedLinearModel::collectFixedDofs(std::vector<int>& fixedDofs) {
   return true;
 }
 
-bool PrecomputedLinearModel::collectBasisNodes(const std::vector<int>& fixedDofs,
-                                               std::vector<int>& basisNodes) {
-  (void)fixedDofs;
+bool PrecomputedLinearModel::collectBasisNodes(std::vector<int>& basisNodes) {
   const auto n = m_state->size();
   if (!d_basisIndices.value().empty()) {
     for (unsigned i : d_basisIndices.value()) {
@@ -154,7 +152,7 @@ bool PrecomputedLinearModel::findTopology() {
 void PrecomputedLinearModel::bwdInit() {
   if (!isValid() || !m_state || !findTopology()) return;
   std::vector<int> fixedDofs, basisNodes;
-  if (!collectFixedDofs(fixedDofs) || !collectBasisNodes(fixedDofs, basisNodes)) return;
+  if (!collectFixedDofs(fixedDofs) || !collectBasisNodes(basisNodes)) return;
   buildBasis(fixedDofs, basisNodes);
   if (!m_basis) return;
   // Step scratch, sized once.

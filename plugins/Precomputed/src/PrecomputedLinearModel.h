@@ -123,7 +123,7 @@ class PrecomputedLinearModel final : public OdeSolver {
  private:
   bool findTopology();
   bool collectFixedDofs(std::vector<int>& fixedDofs);
-  bool collectBasisNodes(const std::vector<int>& fixedDofs, std::vector<int>& basisNodes);
+  bool collectBasisNodes(std::vector<int>& basisNodes);
   bool checkImposed();
   void buildBasis(const std::vector<int>& fixedDofs, const std::vector<int>& basisNodes);
   void imposedAt(double t);

@@ -225,7 +225,7 @@ TEST_F(PrecomputedLinearModelTest, SecondRunLoadsTheCacheAndBadFilesAreRecompute
       std::filesystem::resize_file(path, size - 100);
     }
   };
-  for (const std::string how : {"corrupt", "truncated"}) {
+  for (const std::string& how : std::vector<std::string>{"corrupt", "truncated"}) {
     damage(how);
     Runtime rt;
     Scene s(rt);
