@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "IndexChecks.h"
 #include "Precomputed/kernels/BasisCache.h"
 #include "Precomputed/kernels/LinearStiffnessAssembly.h"
 #include "SolidMechanics/kernels/IsotropicMaterial.h"
@@ -74,15 +75,9 @@ bool PrecomputedLinearModel::checkImposed() {
 bool PrecomputedLinearModel::collectFixedDofs(std::vector<int>& fixedDofs) {
   const auto n = m_state->size();
   if (!d_fixedIndices.value().empty()) {
-    for (unsigned i : d_fixedIndices.value()) {
-      if (i >= n) {
-        msgError(
-            "fixed index " + std::to_string(i) + " is out of range [0, " + std::to_string(n) + ")",
-            "fixedIndices");
-        return false;
-      }
+    if (!reportIndicesOutOfRange(*this, d_fixedIndices.value(), n, "fixedIndices")) return false;
+    for (unsigned i : d_fixedIndices.value())
       for (int c = 0; c < 3; ++c) fixedDofs.push_back(3 * int(i) + c);
-    }
   } else {
     std::vector<std::size_t> rows;
     for (BaseProjectiveConstraint* constraint : node()->template getAll<BaseProjectiveConstraint>())
@@ -109,15 +104,8 @@ bool PrecomputedLinearModel::collectFixedDofs(std::vector<int>& fixedDofs) {
 bool PrecomputedLinearModel::collectBasisNodes(std::vector<int>& basisNodes) {
   const auto n = m_state->size();
   if (!d_basisIndices.value().empty()) {
-    for (unsigned i : d_basisIndices.value()) {
-      if (i >= n) {
-        msgError(
-            "basis index " + std::to_string(i) + " is out of range [0, " + std::to_string(n) + ")",
-            "basisIndices");
-        return false;
-      }
-      basisNodes.push_back(int(i));
-    }
+    if (!reportIndicesOutOfRange(*this, d_basisIndices.value(), n, "basisIndices")) return false;
+    basisNodes.assign(d_basisIndices.value().begin(), d_basisIndices.value().end());
   } else {
     for (const Triangle& t : l_topology->boundaryTriangles())
       for (Index i : t)
