@@ -4,13 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include "CommandLine.h"
 #include "Study.h"
 #include "plugins/TestPlugin/TestSupport.h"
+#include "support/CliRun.h"
 
 namespace stroma::test {
 namespace {
@@ -18,31 +17,6 @@ namespace {
 namespace fs = std::filesystem;
 
 using Table = std::vector<std::vector<std::string>>;
-
-/// The CSV as cells (RFC 4180 quoting; no line breaks inside cells).
-Table readCsv(const fs::path& file) {
-  Table rows;
-  std::ifstream in(file);
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells(1);
-    bool quoted = false;
-    for (std::size_t i = 0; i < line.size(); ++i) {
-      const char c = line[i];
-      if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        cells.back() += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = !quoted;
-      } else if (c == ',' && !quoted) {
-        cells.emplace_back();
-      } else {
-        cells.back() += c;
-      }
-    }
-    rows.push_back(cells);
-  }
-  return rows;
-}
 
 std::size_t column(const Table& t, const std::string& name) {
   for (std::size_t i = 0; i < t.front().size(); ++i)
@@ -89,10 +63,20 @@ const char* kTinyStudy = R"(<?xml version="1.0"?>
 </Study>
 )";
 
+/// Runs kTinyStudy, with `from` replaced by `to` when given, and `extra` arguments; the CSV goes
+/// to dir/out/tiny.csv.
+BenchResult benchTiny(const TempDir& dir, const std::string& from = {}, const std::string& to = {},
+                      std::vector<std::string> extra = {}) {
+  std::string text = kTinyStudy;
+  if (!from.empty()) text.replace(text.find(from), from.size(), to);
+  extra.insert(extra.begin(),
+               {dir.write("tiny.xml", text).string(), "--output", (dir.path() / "out").string()});
+  return bench(extra);
+}
+
 TEST(BenchCommand, TinyStudyWritesEveryRowWithItsStatus) {
   TempDir dir;
-  const fs::path study = dir.write("tiny.xml", kTinyStudy);
-  const BenchResult r = bench({study.string(), "--output", (dir.path() / "out").string()});
+  const BenchResult r = benchTiny(dir);
   // Model b fails where it was not expected to: the study runs on, then exits with 1.
   EXPECT_EQ(r.exitCode, cli::kSimulationFailure) << r.err;
   EXPECT_NE(r.err.find("2 rows of study tiny failed"), std::string::npos) << r.err;
@@ -134,13 +118,9 @@ TEST(BenchCommand, TinyStudyWritesEveryRowWithItsStatus) {
 
 TEST(BenchCommand, QuickStudyAndExpectedFailures) {
   TempDir dir;
-  std::string text = kTinyStudy;
   // Model b's failure announced: the study then succeeds.
-  text.replace(text.find("</Study>"), 8,
-               "<Expect model=\"b\" reason=\"fails on purpose\" /></Study>");
-  const fs::path study = dir.write("tiny.xml", text);
-  const BenchResult r =
-      bench({study.string(), "--quick", "--output", (dir.path() / "out").string()});
+  const BenchResult r = benchTiny(
+      dir, "</Study>", "<Expect model=\"b\" reason=\"fails on purpose\" /></Study>", {"--quick"});
   EXPECT_EQ(r.exitCode, cli::kSuccess) << r.err;
   const Table t = readCsv(dir.path() / "out/tiny.csv");
   ASSERT_EQ(t.size(), 3u);  // dt 0.5 is not quick
@@ -152,12 +132,9 @@ TEST(BenchCommand, QuickStudyAndExpectedFailures) {
 
 TEST(BenchCommand, LoadErrorIsARowWithItsReason) {
   TempDir dir;
-  std::string text = kTinyStudy;
   // An increment out of TestCounter's range [0, 10]: the scene does not load.
-  text.replace(text.find("<Set name=\"increment\">2</Set>"), 29,
-               "<Set name=\"increment\">20</Set>");
-  const fs::path study = dir.write("tiny.xml", text);
-  const BenchResult r = bench({study.string(), "--output", (dir.path() / "out").string()});
+  const BenchResult r =
+      benchTiny(dir, "<Set name=\"increment\">2</Set>", "<Set name=\"increment\">20</Set>");
   EXPECT_EQ(r.exitCode, cli::kSimulationFailure) << r.err;
   const Table t = readCsv(dir.path() / "out/tiny.csv");
   ASSERT_EQ(t.size(), 5u);
@@ -170,10 +147,8 @@ TEST(BenchCommand, LoadErrorIsARowWithItsReason) {
 
 TEST(BenchCommand, MissingErrorComponentIsARowStatus) {
   TempDir dir;
-  std::string text = kTinyStudy;
-  text.replace(text.find("component=\"TestCounter\""), 23, "component=\"ReferenceComparison\"");
-  const fs::path study = dir.write("tiny.xml", text);
-  const BenchResult r = bench({study.string(), "--output", (dir.path() / "out").string()});
+  const BenchResult r =
+      benchTiny(dir, "component=\"TestCounter\"", "component=\"ReferenceComparison\"");
   EXPECT_EQ(r.exitCode, cli::kSimulationFailure);
   const Table t = readCsv(dir.path() / "out/tiny.csv");
   ASSERT_EQ(t.size(), 5u);
