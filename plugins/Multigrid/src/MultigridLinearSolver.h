@@ -41,12 +41,12 @@ struct EnumKeywords<MultigridCycleKind> {
 /// of P at fixed degrees of freedom (MechanicalOperations::fixedGlobalRows) are zeroed, so coarse
 /// corrections never move a fixed point and the identity rows do not enter A_1.
 ///
-/// Each solve assembles A_0 and recomputes the Galerkin operators (the values change for a
-/// corotational model); the grids and P are rebuilt only when the topology or the set of fixed
-/// degrees of freedom changed. With `conjugateGradient`, the cycles precondition an outer
-/// flexible CG (Notay 2000, "Flexible conjugate gradients", SIAM J. Sci. Comput. 22: the
-/// Polak-Ribiere beta, since a cycle with CG smoothers is not a fixed linear operator), which
-/// keeps the convergence when coarse hexahedra lock (bending, nu near 0.5).
+/// Each solve assembles A_0; the Galerkin operators (whose values change for a corotational
+/// model) are recomputed every `coarseUpdateInterval` solves; the grids and P are rebuilt only
+/// when the topology or the set of fixed degrees of freedom changed. With `conjugateGradient`,
+/// the cycles precondition an outer flexible CG (MultigridCycle::flexibleConjugateGradient),
+/// which keeps the convergence when coarse hexahedra lock (bending, nu near 0.5) and when the
+/// coarse operators are stale.
 /// Reports iterations (cycles) and the relative residual like
 /// CGLinearSolver, warning once when `tolerance` is not reached.
 class MultigridLinearSolver final : public LinearSolver {
