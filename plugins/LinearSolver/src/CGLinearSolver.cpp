@@ -183,7 +183,7 @@ void CGLinearSolver::report(const LinearSolveReport& r) {
              number(d_threshold.value()) + ",";
     why += " without converging: relative residual " + number(r.residual) + " > tolerance " +
            number(d_tolerance.value());
-    if (r.residual >= 1)
+    if (r.residual > 1)
       why +=
           ", above the right-hand side's norm: the iterates moved away, as on an indefinite "
           "matrix (an element inverted, a tangent that is not the forces' derivative)";

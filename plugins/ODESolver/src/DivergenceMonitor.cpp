@@ -87,7 +87,7 @@ bool LinearSolveCheck::diverged(const LinearSolveReport& r, const Base& linearSo
   reason = "the linear solver " + linearSolver.path() + " stopped after " +
            std::to_string(r.iterations) + " iterations with relative residual " +
            formatNumber(r.residual) + " > maxLinearResidual " + formatNumber(limit) +
-           (r.residual >= 1 ? " (the residual grew: is the matrix positive definite?)"
+           (r.residual > 1 ? " (the residual grew: is the matrix positive definite?)"
                             : " (raise its iterations, precondition it, or use a direct solver)");
   return true;
 }

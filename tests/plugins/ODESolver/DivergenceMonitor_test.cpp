@@ -140,6 +140,22 @@ TEST(DivergenceMonitor, ABoundedRunReportsNothing) {
   }
 }
 
+TEST(DivergenceMonitor, BadSettingsAreErrorsNamingTheField) {
+  for (const auto& [attribute, field] :
+       {std::pair<std::string, std::string>{R"(onDivergence="halt")", "onDivergence"},
+        {R"(energyGrowth="-1")", "energyGrowth"},
+        {R"(energyWindow="0")", "energyWindow"}}) {
+    SCOPED_TRACE(attribute);
+    SolverScene s(
+        oscillatorScene("<EulerExplicitSolver name=\"ode\" " + attribute + "/>", 100, 1.0));
+    EXPECT_FALSE(s.loaded());
+    bool named = false;
+    for (const Message& m : s.scene().log().messages())
+      named = named || (m.level == MessageLevel::error && m.field == field);
+    EXPECT_TRUE(named) << s.log();
+  }
+}
+
 TEST(DivergenceMonitor, AnExplicitSolverInStopModeRefusesATimeStepAboveItsBound) {
   // omega = 10 rad/s: central differences are stable for dt < 0.2 s.
   SolverScene s(oscillatorScene(R"(<CentralDifferenceSolver name="ode" onDivergence="stop"/>)", 100,
