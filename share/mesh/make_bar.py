@@ -5,8 +5,9 @@ hybrid model's scenes (scenes/hybrid) and tests: a regular grid of 4 x 4 x 12 = 
 spacing 0.01 m, so the bar spans [0, 0.03] x [0, 0.03] x [0, 0.11] m; each of its 3 x 3 x 11
 cubes is split into the 6 tetrahedra around its main diagonal (Kuhn's split, conforming between
 cubes), 594 tetrahedra. Every tetrahedron is positive ((b-a).((c-a)x(d-a)) > 0). Gmsh 2.2
-ASCII; the physical tag of each tetrahedron is the index (0 to 10) of its layer of cubes along z,
-so that a partition into zones by layers can be read from it.
+ASCII; the physical group of each tetrahedron is 1 + the index (0 to 10) of its layer of cubes
+along z (Gmsh numbers groups from 1), so that a partition into zones by layers can be read from
+it (MeshGmshLoader's tetrahedraPhysicalGroups; HybridDomainDecompositionSolver partition="groups").
 
 Run from share/mesh: python3 make_bar.py
 """
@@ -48,7 +49,7 @@ def main():
             out.write("%d %.6g %.6g %.6g\n" % (n + 1, p[0], p[1], p[2]))
         out.write("$EndNodes\n$Elements\n%d\n" % len(tetrahedra))
         for e, (layer, t) in enumerate(tetrahedra):
-            out.write("%d 4 2 %d %d %d %d %d %d\n" % (e + 1, layer, layer, *(v + 1 for v in t)))
+            out.write("%d 4 2 %d %d %d %d %d %d\n" % (e + 1, layer + 1, layer + 1, *(v + 1 for v in t)))
         out.write("$EndElements\n")
 
 

@@ -36,6 +36,21 @@ std::vector<int> partitionFromBoxes(const std::vector<Eigen::Vector3d>& points,
   return zone;
 }
 
+std::vector<int> zonesFromGroups(const std::vector<int>& groupOfElement, int& zoneCount) {
+  std::vector<int> groups;
+  for (int g : groupOfElement)
+    if (g > 0) groups.push_back(g);
+  std::sort(groups.begin(), groups.end());
+  groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+  zoneCount = static_cast<int>(groups.size());
+  std::vector<int> zones(groupOfElement.size(), -1);
+  for (std::size_t e = 0; e < groupOfElement.size(); ++e)
+    if (groupOfElement[e] > 0)
+      zones[e] = static_cast<int>(std::lower_bound(groups.begin(), groups.end(), groupOfElement[e]) -
+                                  groups.begin());
+  return zones;
+}
+
 std::vector<int> partitionWithMetis(const std::vector<TetrahedronNodes>& tetrahedra,
                                     std::size_t pointCount, int zoneCount, std::string& error) {
   if (zoneCount < 1 || tetrahedra.empty()) {

@@ -26,6 +26,11 @@ std::vector<int> partitionFromBoxes(const std::vector<Eigen::Vector3d>& points,
                                     const std::vector<TetrahedronNodes>& tetrahedra,
                                     const std::vector<Box>& boxes);
 
+/// One zone per distinct group > 0 (the physical groups of a mesh file), numbered in increasing
+/// order of the groups; an element of group 0 or below (in no group) gets -1, which
+/// checkPartition reports. Sets `zoneCount`.
+std::vector<int> zonesFromGroups(const std::vector<int>& groupOfElement, int& zoneCount);
+
 /// `zoneCount` zones by METIS_PartMeshDual (elements adjacent through a face, 3 shared nodes).
 /// zoneCount 1 gives one zone. Empty result and `error` when METIS fails.
 std::vector<int> partitionWithMetis(const std::vector<TetrahedronNodes>& tetrahedra,

@@ -111,6 +111,19 @@ bool HybridDomainDecompositionSolver::readPartition(const ElasticProblem& proble
       for (int z : zoneOfElement) zoneCount = std::max(zoneCount, z + 1);
       break;
     }
+    case ZonePartitionSource::groups: {
+      field = "elementGroups";
+      const std::vector<int>& groups = d_elementGroups.value();
+      if (groups.size() != problem.tetrahedra.size()) {
+        msgError("expected one group per tetrahedron of " + m_topology->path() + " (" +
+                     std::to_string(problem.tetrahedra.size()) + "), got " +
+                     std::to_string(groups.size()),
+                 field);
+        return false;
+      }
+      zoneOfElement = zonesFromGroups(groups, zoneCount);
+      break;
+    }
     case ZonePartitionSource::boxes: {
       field = "zoneBoxes";
       std::vector<Box> boxes;

@@ -15,10 +15,10 @@
 namespace stroma {
 
 /// Where the zones come from (the keywords of `partition`).
-enum class ZonePartitionSource { list, boxes, metis };
+enum class ZonePartitionSource { list, groups, boxes, metis };
 template <>
 struct EnumKeywords<ZonePartitionSource> {
-  static constexpr std::array<std::string_view, 3> names{"list", "boxes", "metis"};
+  static constexpr std::array<std::string_view, 4> names{"list", "groups", "boxes", "metis"};
 };
 template <>
 struct EnumKeywords<domaindecomposition::InterfaceIteration> {
@@ -49,10 +49,18 @@ class HybridDomainDecompositionSolver final : public OdeSolver {
       this, "poissonRatio", 0.3, "Poisson's ratio of the mesh.", {.min = -1.0, .max = 0.5}};
   Data<ZonePartitionSource> d_partition{
       this, "partition", ZonePartitionSource::boxes,
-      "Where the zones come from: list (elementZones), boxes (zoneBoxes), metis (zoneCount "
-      "zones by METIS_PartMeshDual)."};
+      "Where the zones come from: list (elementZones), groups (elementGroups: one zone per "
+      "group of the mesh file), boxes (zoneBoxes), metis (zoneCount zones by "
+      "METIS_PartMeshDual)."};
   Data<std::vector<int>> d_elementZones{
       this, "elementZones", {}, "Zone of each tetrahedron (nbTetrahedra), partition=\"list\"."};
+  Data<std::vector<int>> d_elementGroups{
+      this,
+      "elementGroups",
+      {},
+      "Group of each tetrahedron (nbTetrahedra), partition=\"groups\": typically "
+      "@loader.tetrahedraPhysicalGroups of a MeshGmshLoader. Each distinct group > 0 is a zone, "
+      "in increasing order of the group numbers; 0 means no group (an error)."};
   Data<std::vector<Vec6d>> d_zoneBoxes{
       this,
       "zoneBoxes",

@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "DomainDecomposition/kernels/SingleDomainReference.h"
 #include "plugins/Spring/MechanicsTestSupport.h"
@@ -126,6 +128,59 @@ TEST(HybridDomainDecompositionSolver, AnElementInNoZoneIsNamed) {
       barScene(R"(zoneBoxes="-1 -1 -1 1 1 0.1" forceIndices="189" forces="0 -0.01 0")"),
       {"54 tetrahedra are in no zone: elements 540, 541"});
   EXPECT_EQ(m.field, "zoneBoxes");
+}
+
+/// A copy of bar.msh whose physical groups are `groupOfLayer[layer]` instead of layer + 1, and
+/// the bar scene reading it.
+std::string barSceneWithGroups(const std::vector<int>& groupOfLayer, const std::string& solver) {
+  std::ifstream in(kBar);
+  const auto temp = std::filesystem::temp_directory_path() / "stroma_bar_groups.msh";
+  std::ofstream out(temp);
+  bool elements = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line == "$Elements") elements = true;
+    std::istringstream fields(line);
+    std::vector<long long> v;
+    for (long long x; fields >> x;) v.push_back(x);
+    if (elements && v.size() == 9 && v[1] == 4) {  // number, type 4, 2 tags, 4 nodes
+      const int group = groupOfLayer.at(static_cast<std::size_t>(v[3] - 1));
+      line = std::to_string(v[0]) + " 4 2 " + std::to_string(group) + " " + std::to_string(v[4]);
+      for (int k = 5; k < 9; ++k) line += " " + std::to_string(v[k]);
+    }
+    out << line << '\n';
+  }
+  std::string scene = barScene(solver);
+  scene.replace(scene.find(kBar), kBar.size(), temp.string());
+  return scene;
+}
+
+TEST(HybridDomainDecompositionSolver, ZonesFromTheGroupsOfTheMeshFile) {
+  // The groups of the file (MeshGmshLoader's tetrahedraPhysicalGroups) as zones: layers 1-5 in
+  // group 10, 6-8 in group 20, 9-11 in group 30 make the zones of kThreeZones' boxes, in the
+  // order of the group numbers, so the iterations are the same to the bit.
+  const std::string loads = R"(forceIndices="189" forces="0 -0.01 0" iterationsPerStep="50" )";
+  SceneHolder groups, boxes;
+  ASSERT_TRUE(groups.load(barSceneWithGroups(
+      {10, 10, 10, 10, 10, 20, 20, 20, 30, 30, 30},
+      loads + R"(partition="groups" elementGroups="@loader.tetrahedraPhysicalGroups")")));
+  ASSERT_TRUE(boxes.load(barScene(kThreeZones + R"(iterationsPerStep="50")")));
+  ASSERT_TRUE(groups.step(2));
+  ASSERT_TRUE(boxes.step(2));
+  EXPECT_EQ(compareDisplacements(displacement(groups), displacement(boxes)).max, 0.0);
+  EXPECT_EQ(groups.text("@Bar/hybrid.currentZoneModels"), "precomputed precomputed precomputed");
+
+  // An element of no group (0) is named; a group list of the wrong size too.
+  SceneHolder none;
+  const Message m = none.loadFailing(
+      barSceneWithGroups({1, 1, 1, 1, 1, 2, 2, 2, 0, 2, 2},
+                         loads + R"(partition="groups" elementGroups="@loader.tetrahedraPhysicalGroups")"),
+      {"54 tetrahedra are in no zone: elements 432, 433"});
+  EXPECT_EQ(m.field, "elementGroups");
+  SceneHolder wrong;
+  EXPECT_EQ(wrong.loadFailing(barScene(loads + R"(partition="groups" elementGroups="1 2 3")"),
+                              {"expected one group per tetrahedron", "(594), got 3"})
+                .field,
+            "elementGroups");
 }
 
 TEST(HybridDomainDecompositionSolver, NoFixedNodeAndOnlyForcesIsRefused) {

@@ -86,6 +86,33 @@ TEST(GmshFormat, Version22Binary) {
 
 TEST(GmshFormat, Version41Binary) { expectCube(parseOk(gmsh41Binary(), MeshFormat::gmsh)); }
 
+TEST(GmshFormat, PhysicalGroupsOfTheVolumeElementsInEveryVersion) {
+  const std::vector<int> ones(5, 1);
+  // 2.2: the first tag; 1: reg-phys.
+  const MeshData v22 = parseOk(dataFile("cube_v22.msh"), MeshFormat::gmsh);
+  EXPECT_EQ(v22.tetrahedronGroups, ones);
+  EXPECT_EQ(v22.hexahedronGroups, std::vector<int>{1});
+  EXPECT_EQ(parseOk(dataFile("cube_v1.msh"), MeshFormat::gmsh).hexahedronGroups,
+            std::vector<int>{1});
+  EXPECT_EQ(parseOk(gmsh22Binary(), MeshFormat::gmsh).tetrahedronGroups, ones);
+  // 4.1: the group of the elements' entity in $Entities; none there gives 0.
+  std::string text = dataFile("cube_v41.msh");
+  EXPECT_EQ(parseOk(text, MeshFormat::gmsh).tetrahedronGroups, std::vector<int>(5, 0));
+  const std::string volume = "1 0 0 0 1 1 1 0 0\n";
+  ASSERT_NE(text.find(volume), std::string::npos);
+  text.replace(text.find(volume), volume.size(), "1 0 0 0 1 1 1 1 -7 0\n");
+  EXPECT_EQ(parseOk(text, MeshFormat::gmsh).tetrahedronGroups, std::vector<int>(5, 7));
+  EXPECT_EQ(parseOk(gmsh41Binary(), MeshFormat::gmsh).tetrahedronGroups, std::vector<int>(5, 0));
+  EXPECT_EQ(parseOk(gmsh41Binary(12), MeshFormat::gmsh).tetrahedronGroups,
+            std::vector<int>(5, 12));
+  // A truncated $Entities section says what it expected.
+  const std::string binary = gmsh41Binary(12);
+  EXPECT_CONTAINS(parseError(binary.substr(0, binary.find("$EndEntities") - 20), MeshFormat::gmsh),
+                  "byte offset");
+  text.replace(text.find("1 0 0 0 1 1 1 1 -7 0\n"), 21, "1 0 0 0 1 1 1 x\n");
+  EXPECT_CONTAINS(parseError(text, MeshFormat::gmsh), "the number of physical groups");
+}
+
 TEST(GmshFormat, SecondOrderElementsKeepTheirCornersWithAWarning) {
   const std::string file =
       "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n10\n"

@@ -69,10 +69,19 @@ inline std::string gmsh22Binary() {
   return b.str();
 }
 
-/// Gmsh 4.1 binary: one node block (tags 10 ... 80), one block of five tetrahedra.
-inline std::string gmsh41Binary() {
+/// Gmsh 4.1 binary: one node block (tags 10 ... 80), one block of five tetrahedra; with
+/// `volumeGroup` > 0, an $Entities section puts their volume (entity 1) in that physical group.
+inline std::string gmsh41Binary(int volumeGroup = 0) {
   Bytes b;
   b.text("$MeshFormat\n4.1 1 8\n").put<std::int32_t>(1).text("\n$EndMeshFormat\n");
+  if (volumeGroup > 0) {
+    b.text("$Entities\n");
+    b.put<std::uint64_t>(0).put<std::uint64_t>(0).put<std::uint64_t>(0).put<std::uint64_t>(1);
+    b.put<std::int32_t>(1);  // the volume's tag, its bounding box, one group, no bounding surface
+    for (double v : {0.0, 0.0, 0.0, 1.0, 1.0, 1.0}) b.put<double>(v);
+    b.put<std::uint64_t>(1).put<std::int32_t>(volumeGroup).put<std::uint64_t>(0);
+    b.text("\n$EndEntities\n");
+  }
   b.text("$Nodes\n");
   b.put<std::uint64_t>(1).put<std::uint64_t>(8).put<std::uint64_t>(10).put<std::uint64_t>(80);
   b.put<std::int32_t>(3).put<std::int32_t>(1).put<std::int32_t>(0).put<std::uint64_t>(8);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <limits>
 #include <map>
 #include <optional>
 #include <unordered_map>
@@ -130,8 +131,9 @@ class ElementSink {
  public:
   explicit ElementSink(MeshData& mesh) : m_mesh(mesh) {}
 
-  /// `points` holds the element's point indices (at least the corners).
-  void add(long long type, const ElementType& info, const Index* points) {
+  /// `points` holds the element's point indices (at least the corners); `physical` is the
+  /// element's physical group (0: none), kept for tetrahedra and hexahedra.
+  void add(long long type, const ElementType& info, const Index* points, long long physical) {
     switch (info.kind) {
       case Kind::edge:
         m_mesh.edges.push_back({points[0], points[1]});
@@ -144,11 +146,13 @@ class ElementSink {
         break;
       case Kind::tetrahedron:
         m_mesh.tetrahedra.push_back({points[0], points[1], points[2], points[3]});
+        m_mesh.tetrahedronGroups.push_back(static_cast<int>(physical));
         break;
       case Kind::hexahedron: {
         Hexahedron h;
         std::copy(points, points + 8, h.begin());
         m_mesh.hexahedra.push_back(h);
+        m_mesh.hexahedronGroups.push_back(static_cast<int>(physical));
         break;
       }
       case Kind::point:
@@ -213,7 +217,9 @@ class GmshReader {
         if (!sawNodes) return fail(m_text.at("$Elements comes before $Nodes"));
         ok = m_version == 2 ? (m_binary ? readElementsV2Binary() : readElementsV1V2("$EndElements"))
                             : readElementsV4();
-      } else
+      } else if (name == "Entities" && m_version == 4)
+        ok = readEntitiesV4();
+      else
         ok = skipSection(name);
       if (!ok) return false;
     }
@@ -318,8 +324,9 @@ class GmshReader {
       const auto info = elementType(type);
       if (!info) return fail(m_text.at(unsupportedType(type)));
       long long nodeCount = info->nodes;
+      long long physical = 0;  // version 1: reg-phys; version 2: the first tag
       if (m_version == 1) {
-        long long physical = 0, elementary = 0;
+        long long elementary = 0;
         if (!m_text.readInteger(physical, "the physical region", m_error) ||
             !m_text.readInteger(elementary, "the elementary region", m_error) ||
             !m_text.readInteger(nodeCount, "the number of nodes", m_error))
@@ -335,8 +342,9 @@ class GmshReader {
         if (tags < 0 || tags > 1000)
           return fail(m_text.at("bad number of tags " + std::to_string(tags)));
         for (long long t = 0; t < tags; ++t) {
-          long long ignored = 0;
-          if (!m_text.readInteger(ignored, "an element tag", m_error)) return false;
+          long long tag = 0;
+          if (!m_text.readInteger(tag, "an element tag", m_error)) return false;
+          if (t == 0) physical = tag;
         }
       }
       points.clear();
@@ -350,7 +358,10 @@ class GmshReader {
                       " uses node " + std::to_string(tag) + ", which is not in the node section");
         points.push_back(index);
       }
-      m_elements.add(type, *info, points.data());
+      if (!checkGroup(physical, "line " + std::to_string(line) + ": element " +
+                                    std::to_string(number)))
+        return false;
+      m_elements.add(type, *info, points.data(), physical);
     }
     return m_text.expect(endKeyword, m_error);
   }
@@ -420,7 +431,8 @@ class GmshReader {
       for (long long e = 0; e < following; ++e) {
         const std::size_t where = in.offset();
         const long long number = in.read<std::int32_t>();
-        in.skip(4 * static_cast<std::size_t>(tags));
+        const long long physical = tags > 0 ? in.read<std::int32_t>() : 0;
+        in.skip(4 * static_cast<std::size_t>(tags > 0 ? tags - 1 : 0));
         points.clear();
         for (int k = 0; k < info->nodes; ++k) {
           const long long tag = in.read<std::int32_t>();
@@ -431,7 +443,10 @@ class GmshReader {
                         ", which is not in the node section");
           points.push_back(index);
         }
-        m_elements.add(type, *info, points.data());
+        if (!checkGroup(physical, "byte offset " + std::to_string(where) + ": element " +
+                                      std::to_string(number)))
+          return false;
+        m_elements.add(type, *info, points.data(), physical);
       }
       done += static_cast<std::size_t>(following);
     }
@@ -457,6 +472,13 @@ class GmshReader {
     if (!in) return m_text.readInteger(value, what, m_error);
     if (!in->has(1, 4)) return fail(in->truncated(what));
     value = in->read<std::int32_t>();
+    return true;
+  }
+  bool readReal(std::string_view what, ByteCursor* in) {
+    double ignored = 0;
+    if (!in) return m_text.readDouble(ignored, what, m_error);
+    if (!in->has(1, 8)) return fail(in->truncated(what));
+    in->read<double>();
     return true;
   }
   std::string where(const ByteCursor* in) const {
@@ -518,6 +540,55 @@ class GmshReader {
     return m_text.expect("$EndNodes", m_error);
   }
 
+  /// A physical group is a positive number (0: none); it is kept as an int.
+  bool checkGroup(long long physical, const std::string& element) {
+    if (physical >= 0 && physical <= std::numeric_limits<int>::max()) return true;
+    return fail(element + " has the physical group " + std::to_string(physical) +
+                ": expected a number from 0 to " +
+                std::to_string(std::numeric_limits<int>::max()));
+  }
+
+  /// Version 4.1 $Entities: points, curves, surfaces and volumes with their physical groups
+  /// (the first one is the elements' group; an entity in several groups is rare and its other
+  /// groups are not kept). Bounding boxes and bounding entities are skipped.
+  bool readEntitiesV4() {
+    std::optional<ByteCursor> binary;
+    if (m_binary) binary = binaryAfterLine();
+    ByteCursor* in = binary ? &*binary : nullptr;
+    std::size_t counts[4] = {};
+    for (std::size_t& c : counts)
+      if (!readSize(c, "the number of entities of a dimension", in)) return false;
+    for (long long dim = 0; dim < 4; ++dim)
+      for (std::size_t e = 0; e < counts[dim]; ++e) {
+        long long tag = 0;
+        if (!readInt(tag, "an entity tag", in)) return false;
+        // A point has its coordinates, the others their bounding box.
+        for (int k = 0; k < (dim == 0 ? 3 : 6); ++k)
+          if (!readReal("an entity coordinate", in)) return false;
+        std::size_t physicalCount = 0;
+        if (!readSize(physicalCount, "the number of physical groups of an entity", in))
+          return false;
+        for (std::size_t k = 0; k < physicalCount; ++k) {
+          long long physical = 0;
+          if (!readInt(physical, "a physical group", in)) return false;
+          if (!checkGroup(physical < 0 ? -physical : physical,
+                          where(in) + "entity " + std::to_string(tag)))
+            return false;
+          // Gmsh writes a group negative to flip its orientation: the group is its magnitude.
+          if (k == 0) m_entityGroups[{dim, tag}] = physical < 0 ? -physical : physical;
+        }
+        if (dim == 0) continue;
+        std::size_t bounding = 0;
+        if (!readSize(bounding, "the number of bounding entities", in)) return false;
+        for (std::size_t k = 0; k < bounding; ++k) {
+          long long ignored = 0;
+          if (!readInt(ignored, "a bounding entity tag", in)) return false;
+        }
+      }
+    if (in) return endBinary(*in, "$EndEntities");
+    return m_text.expect("$EndEntities", m_error);
+  }
+
   bool readElementsV4() {
     std::optional<ByteCursor> binary;
     if (m_binary) binary = binaryAfterLine();
@@ -541,6 +612,8 @@ class GmshReader {
         return false;
       const auto info = elementType(type);
       if (!info) return fail(typeAt + unsupportedType(type));
+      const auto group = m_entityGroups.find({dim, entity});
+      const long long physical = group == m_entityGroups.end() ? 0 : group->second;
       if (in && !in->has(count, 8 * (1 + info->nodes)))
         return fail(
             in->truncated(std::to_string(count) + " elements of type " + std::to_string(type)));
@@ -565,7 +638,7 @@ class GmshReader {
                         std::to_string(tag) + ", which is not in the node section");
           points.push_back(index);
         }
-        m_elements.add(type, *info, points.data());
+        m_elements.add(type, *info, points.data(), physical);
       }
     }
     if (in) return endBinary(*in, "$EndElements");
@@ -578,6 +651,8 @@ class GmshReader {
   ElementSink m_elements;
   std::string& m_error;
   NodeNumbering m_nodes;
+  /// Version 4: (dimension, entity tag) -> the entity's first physical group, from $Entities.
+  std::map<std::pair<long long, long long>, long long> m_entityGroups;
   int m_version = 0;  // 1, 2 or 4
   bool m_binary = false;
   bool m_bigEndian = false;

@@ -13,7 +13,8 @@
 //   line (1), triangle (2), quad (3), tetrahedron (4), hexahedron (5); the second-order line,
 //   triangle, quad, tetrahedron and hexahedron (8, 9, 10, 11, 12, 16, 17) are read as their
 //   corner (first-order) element; points (15) are ignored; other known types are skipped with
-//   a warning.
+//   a warning. The physical group of each tetrahedron and hexahedron is kept (version 1: its
+//   reg-phys; 2: its first tag; 4.1: the first physical group of its entity in $Entities).
 // - VTK legacy .vtk, ASCII and BINARY, DATASET UNSTRUCTURED_GRID and POLYDATA (cells in the
 //   classic layout or the 5.x OFFSETS/CONNECTIVITY layout); point normals from POINT_DATA.
 // - VTK XML .vtu/.vtp (UnstructuredGrid, PolyData), DataArray format "ascii".
@@ -42,6 +43,10 @@ struct MeshData {
   std::vector<Hexahedron> hexahedra;
   std::vector<Vec3d> normals;    ///< per point, when the file has them (else empty)
   std::vector<Vec2d> texcoords;  ///< per point, when the file has them (OBJ vt; else empty)
+  /// Gmsh: the physical group of each tetrahedron and hexahedron (0: in none; an element of
+  /// several groups keeps the first). Empty for the other formats.
+  std::vector<int> tetrahedronGroups;
+  std::vector<int> hexahedronGroups;
   /// Things read but not kept (unsupported element types...), each with its place in the file.
   std::vector<std::string> warnings;
 };
