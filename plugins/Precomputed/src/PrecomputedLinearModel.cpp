@@ -244,6 +244,15 @@ void PrecomputedLinearModel::imposedAt(double t) {
 
 void PrecomputedLinearModel::solve(MechanicalOperations& mop, double dt) {
   if (!m_basis || !m_state) return;
+  // The basis belongs to the mesh it was computed on: a state that changed size (a topology
+  // change) cannot use it.
+  if (m_state->size() != static_cast<std::size_t>(m_basis->nodeCount())) {
+    if (!m_warnedSolve)
+      msgWarning("the state has " + std::to_string(m_state->size()) + " points, the basis " +
+                 std::to_string(m_basis->nodeCount()) + ": positions left unchanged");
+    m_warnedSolve = true;
+    return;
+  }
   // Loads: the forces of the node's force fields now, kept where they fall on basis nodes.
   const VecId f = mop.allocDeriv();
   MechanicalParams mp;
