@@ -7,10 +7,12 @@
 // stiffness scale, an impact. Each case is a scene made from a text template and run in this
 // process; it ends stable, stalled, refused or diverged, with the reason the solvers reported.
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -311,6 +313,25 @@ Outcome runCase(Runtime& runtime, const Beam& beam, const Model& model, const So
   return out;
 }
 
+/// "corotational-tetrahedra-large_central-differences_dt-1.scn": a case's scene for
+/// --save-scenes, to rerun it with `stroma run`.
+std::string caseFileName(const Model& model, const Solver& solver, const Case& c) {
+  // Words in lower case joined by '-'; the value as written ("1e+10", "0.4999").
+  const auto words = [](const std::string& text) {
+    std::string out;
+    for (char ch : text) {
+      if (std::isalnum(static_cast<unsigned char>(ch)))
+        out += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+      else if (!out.empty() && out.back() != '-')
+        out += '-';
+    }
+    while (!out.empty() && out.back() == '-') out.pop_back();
+    return out;
+  };
+  return words(model.name) + "_" + words(solver.name) + "_" + words(c.name) +
+         (c.value == "-" ? "" : "-" + c.value) + ".scn";
+}
+
 std::string csvField(const std::string& text) {
   std::string quoted = "\"";
   for (char c : text)
@@ -325,12 +346,18 @@ std::string csvNumber(double value) { return std::isnan(value) ? "" : shortNumbe
 int stabilityCommand(const std::vector<std::string>& args) {
   Arguments a;
   std::string error;
-  if (!parseArguments(args, {"--csv", "--data-path", "--log-json"},
+  if (!parseArguments(args, {"--csv", "--save-scenes", "--data-path", "--log-json"},
                       {"--stability", "--quick", "--verbose"}, a, error))
     return usageError(error);
   if (!a.positional.empty())
     return usageError("check --stability takes no scene: its cases are built in");
   const bool quick = a.has("--quick");
+  const std::string* sceneDir = a.value("--save-scenes");
+  if (sceneDir) {
+    std::error_code failed;
+    std::filesystem::create_directories(*sceneDir, failed);
+    if (failed) return usageError("cannot make the folder '" + *sceneDir + "'");
+  }
   std::ofstream csv;
   if (const std::string* path = a.value("--csv")) {
     csv.open(*path);
@@ -350,6 +377,9 @@ int stabilityCommand(const std::vector<std::string>& args) {
   for (const Model& model : kModels)
     for (const Solver& solver : kSolvers)
       for (const Case& c : cases) {
+        if (sceneDir)
+          std::ofstream(std::filesystem::path(*sceneDir) / caseFileName(model, solver, c))
+              << sceneXml(beam, model, solver, c.setting);
         Outcome out;
         try {
           out = runCase(runtime, beam, model, solver, c.setting, solver.isStatic ? 3 : steps);

@@ -21,7 +21,7 @@ Usage:
                                     docs/state-format.md)
       --export-every K              ... and also every K steps (with step 0)
   stroma check SCENE [options]      load a scene and report every problem, without running it
-  stroma check --stability [--quick] [--csv FILE]
+  stroma check --stability [--quick] [--csv FILE] [--save-scenes DIR]
                                     the stability suite: each model (linear, corotational and
                                     hyperelastic tetrahedra, tensor-mass, hexahedra) with each
                                     solver (implicit Euler + CG or LDL, static, central
@@ -29,7 +29,8 @@ Usage:
                                     modulus 1e2..1e10 Pa, Poisson 0.3..0.4999, dt 1e-5..1 s,
                                     slivers, inverted elements, a load of 100 E, an impact):
                                     stable / stalled / refused / diverged, with the reason;
-                                    exit code 1 only when a case fails to load or throws
+                                    exit code 1 only when a case fails to load or throws;
+                                    --save-scenes writes each case's scene, for stroma run
   stroma bench STUDY.xml [options]  run a study (scenes x models, resolutions, solvers, time
                                     steps), write DIR/STUDY.csv and DIR/STUDY.png (error
                                     against run time); format: bench/studies/README.md

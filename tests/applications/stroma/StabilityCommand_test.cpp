@@ -97,5 +97,25 @@ TEST(StabilitySuite, ExplicitSolversRefuseATimeStepAboveTheirBound) {
   EXPECT_GT(below, 0);  // dt = 1e-5 s is below the bound of every model
 }
 
+TEST(StabilitySuite, SavedScenesRerunWithStromaRun) {
+  TempDir dir;
+  const CliRun suite =
+      runCli(STROMA_CLI, "check --stability --quick --save-scenes \"" + dir.path().string() + "\"");
+  ASSERT_EQ(suite.exitCode, 0) << suite.output;
+  // Refused in the suite, refused again by stroma run (exit code 1, the bound named).
+  const auto refused = dir.path() / "linear-tetrahedra_central-differences_dt-1.scn";
+  ASSERT_TRUE(std::filesystem::exists(refused)) << refused;
+  const CliRun run = runCli(STROMA_CLI, "run \"" + refused.string() + "\" -n 5");
+  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_NE(run.output.find("divergence (time step above the stability bound) at step 1"),
+            std::string::npos)
+      << run.output;
+  // Stable in the suite: runs to the end.
+  const auto stable = dir.path() / "corotational-tetrahedra-polar_implicit-euler-ldl_impact.scn";
+  ASSERT_TRUE(std::filesystem::exists(stable)) << stable;
+  const CliRun quiet = runCli(STROMA_CLI, "run \"" + stable.string() + "\" -n 5");
+  EXPECT_EQ(quiet.exitCode, 0) << quiet.output;
+}
+
 }  // namespace
 }  // namespace stroma::test
