@@ -441,9 +441,9 @@ const Beam049Setting kBeam049Settings[] = {
      "conjugateGradient=\"true\" iterations=\"5\" coarseUpdateInterval=\"0\" "
      "warmStart=\"true\""},
     // Cheaper smoothing on the same levels: the smoother does most of the work at nu = 0.49.
-    {"FCG6-s2-stale",
+    {"FCG6-s2-stale-warm",
      "conjugateGradient=\"true\" iterations=\"6\" smoothingIterations=\"2\" "
-     "coarseUpdateInterval=\"0\""},
+     "coarseUpdateInterval=\"0\" warmStart=\"true\""},
     // Fewer coarse levels, the coarsest solved by LDL^T (factorized once per update): coarse
     // corrections that do not lock as much as 4 levels of trilinear hexahedra.
     {"FCG4-L1direct-stale",
