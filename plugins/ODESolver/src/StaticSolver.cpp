@@ -65,8 +65,10 @@ void StaticSolver::solve(MechanicalOperations& mop, double dt) {
   const bool log = d_printLog.value() || (l_newtonSolver && l_newtonSolver->d_printLog.value());
   setStatus("Running");
 
-  // Static: no velocity.
+  // Static: no velocity. The imposed positions of the end of the step (moving constraints)
+  // are part of this step's equilibrium: in place before the first residual.
   mop.vOp(v, VecId::null(), VecId::null(), 0.0);
+  mop.projectPosition(x);
   double normR = residual(mop, dt, f);
   const double normR0 = normR;
   bool converged = set.absoluteResidual > 0 && normR <= set.absoluteResidual;

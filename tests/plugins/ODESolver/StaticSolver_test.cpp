@@ -69,6 +69,20 @@ TEST(StaticSolver, LinearChainReachesTheExactEquilibriumInOneIteration) {
   EXPECT_EQ(s.field("solver", "lastIterations"), "0");
 }
 
+TEST(StaticSolver, ImposedMotionOfTheStepIsInTheEquilibriumOfThatStep) {
+  // The last point moved by 1 m over [0, 1] s (LinearMovementProjectiveConstraint), no force:
+  // the equilibrium at the end of the step has every spring stretched by 1/5. The imposed
+  // positions of the end of the step must be in place before Newton, not set after it.
+  std::string xml = chainScene(R"(<StaticSolver name="solver"/>)", 10.0, 0.0, 0.0);
+  xml.insert(xml.rfind("  </Node>"),
+             "    <LinearMovementProjectiveConstraint indices=\"5\" keyTimes=\"0 1\" "
+             "movements=\"0 0 0  1 0 0\"/>\n");
+  SolverScene s(xml);
+  ASSERT_TRUE(s.loaded()) << s.log();
+  ASSERT_TRUE(s.step()) << s.log();
+  expectChainAtEquilibrium(s, 0.2, 1e-12);
+}
+
 const std::string kNewton = R"(<StaticSolver name="solver" newton_iterations="30"
     absolute_residual_tolerance_threshold="1e-9" relative_residual_tolerance_threshold="-1"
     absolute_correction_tolerance_threshold="-1" relative_correction_tolerance_threshold="-1")";
