@@ -13,6 +13,14 @@
 namespace stroma {
 
 namespace {
+
+// A positive p.Ap below the scene's threshold is SOFA's way of stopping CG once the step left
+// is negligible: the solve ends as the scene asked, not diverged (the ODE solvers do not count
+// it). Zero, negative or non-finite p.Ap is a breakdown: the matrix is not positive definite.
+bool stoppedOnThreshold(double denominator, double threshold) {
+  return std::isfinite(denominator) && denominator > 0 && denominator < threshold;
+}
+
 bool isAssembledTemplate(const std::string& name) {
   return name.rfind("CompressedRowSparseMatrix", 0) == 0;
 }
@@ -92,6 +100,7 @@ LinearSolveReport CGLinearSolver::solveMatrixFree(MechanicalOperations& mop,
     if (std::abs(den) < threshold || !std::isfinite(den)) {
       m_brokeDown = true;
       m_lastDenominator = den;
+      report.converged = stoppedOnThreshold(den, threshold);
       break;
     }
     const double alpha = rho / den;
@@ -148,6 +157,7 @@ LinearSolveReport CGLinearSolver::solveAssembled(MechanicalOperations& mop,
     if (std::abs(den) < d_threshold.value() || !std::isfinite(den)) {
       m_brokeDown = true;
       m_lastDenominator = den;
+      report.converged = stoppedOnThreshold(den, d_threshold.value());
       break;
     }
     const double alpha = rho / den;
@@ -170,7 +180,8 @@ void CGLinearSolver::report(const LinearSolveReport& r) {
   if (d_verbose.value())
     msgInfo("CG: " + std::to_string(r.iterations) + " iterations, relative residual " +
             std::to_string(r.residual));
-  if (r.converged) return;
+  // A stop on the threshold is reported even when it counts as converged (the scene's stop).
+  if (r.converged && !m_brokeDown) return;
   if (m_unconverged++ == 0) {
     const auto number = [](double value) {
       char text[32];

@@ -11,8 +11,9 @@ namespace stroma {
 /// template, GraphScattered, is matrix-free: each product goes through the force fields'
 /// addDForce and the masses. A CompressedRowSparseMatrix template assembles the matrix once per
 /// solve and iterates on it, optionally preconditioned by its diagonal (Jacobi). Stops when ||r||
-/// <= tolerance ||rhs||, after `iterations`, or when a denominator falls below `threshold`; a stop
-/// without convergence is reported (a warning the first time, and the count at the end of the run;
+/// <= tolerance ||rhs||, after `iterations`, or when a denominator falls below `threshold` (a
+/// positive p.Ap below it is the scene's own stop and counts as converged for the ODE solver; a
+/// non-positive one is a breakdown); a stop without convergence is reported (a warning the first time, and the count at the end of the run;
 /// a residual that ended above the right-hand side's norm is said to have grown). The ODE solver
 /// decides from the returned residual whether the stop is a divergence (its maxLinearResidual).
 /// The matrix-free template calls the DependentDofs hooks of its system's projective
