@@ -30,6 +30,7 @@ ReferenceComparison::ReferenceComparison() {
   for (BaseData* output :
        {static_cast<BaseData*>(&d_maxError), static_cast<BaseData*>(&d_rmsError),
         static_cast<BaseData*>(&d_maxErrorAbsolute), static_cast<BaseData*>(&d_rmsErrorAbsolute),
+        static_cast<BaseData*>(&d_meanError), static_cast<BaseData*>(&d_meanErrorAbsolute),
         static_cast<BaseData*>(&d_comparedTime), static_cast<BaseData*>(&d_worstIndex)})
     addOutput(output);
 }
@@ -314,14 +315,14 @@ void ReferenceComparison::compareNow(double time) {
                      ": no comparison (NaN) from time " + formatNumber(time),
                  "state");
     m_sizeWarned = true;
-    const Comparison none{time, kNaN, kNaN, -1};
+    const Comparison none{time, kNaN, kNaN, kNaN, -1};
     m_history.push_back(none);
     publish(none);
     return;
   }
   const Vec3d load = d_loadDirection.value().normalized();
   const std::size_t count = m_location.empty() ? m_pointIndex.size() : m_location.size();
-  double sumSquares = 0, largest = -1;
+  double sum = 0, sumSquares = 0, largest = -1;
   int worst = -1;
   for (std::size_t k = 0; k < count; ++k) {
     Vec3d p = Vec3d::Zero();
@@ -335,6 +336,7 @@ void ReferenceComparison::compareNow(double time) {
     const double error = m_deflectionOnly
                              ? std::abs((p - m_rest[k]).dot(load) - m_targetDeflection[k])
                              : (p - m_target[k]).norm();
+    sum += error;
     sumSquares += error * error;
     if (!std::isnan(largest) && (std::isnan(error) || error > largest)) {  // NaN is the worst
       largest = error;
@@ -343,7 +345,8 @@ void ReferenceComparison::compareNow(double time) {
   }
   const int named =
       worst >= 0 ? static_cast<int>(m_reportIndex[static_cast<std::size_t>(worst)]) : -1;
-  const Comparison c{time, largest, std::sqrt(sumSquares / static_cast<double>(count)), named};
+  const double n = static_cast<double>(count);
+  const Comparison c{time, largest, std::sqrt(sumSquares / n), sum / n, named};
   m_history.push_back(c);
   publish(c);
 }
@@ -354,6 +357,8 @@ void ReferenceComparison::publish(const Comparison& c) {
   d_rmsErrorAbsolute.setValue(c.rmsAbsolute);
   d_maxError.setValue(L > 0 ? c.maxAbsolute / L : kNaN);
   d_rmsError.setValue(L > 0 ? c.rmsAbsolute / L : kNaN);
+  d_meanErrorAbsolute.setValue(c.meanAbsolute);
+  d_meanError.setValue(L > 0 ? c.meanAbsolute / L : kNaN);
   d_comparedTime.setValue(c.time);
   d_worstIndex.setValue(c.worst);
 }
@@ -400,6 +405,7 @@ std::vector<std::string> ReferenceComparison::runSummaryLines() const {
     const Comparison& c = m_history[k];
     lines.push_back("error at time " + formatNumber(c.time) + " s: max " +
                     formatNumber(c.maxAbsolute / L) + ", rms " + formatNumber(c.rmsAbsolute / L) +
+                    ", mean " + formatNumber(c.meanAbsolute / L) +
                     " of referenceLength " + formatNumber(L) + " (max " +
                     formatNumber(c.maxAbsolute) + ", rms " + formatNumber(c.rmsAbsolute) +
                     ", worst point " + std::to_string(c.worst) + ")");

@@ -219,6 +219,12 @@ class ReferenceComparison final : public BehaviorModel,
                           0.0,
                           "RMS point error / referenceLength.",
                           {.allowNonFinite = true, .output = true}};
+  Data<double> d_meanError{this,
+                           "meanError",
+                           0.0,
+                           "Mean point error / referenceLength (the Truth Cube's 'mean bead "
+                           "error').",
+                           {.allowNonFinite = true, .output = true}};
   Data<double> d_maxErrorAbsolute{this,
                                   "maxErrorAbsolute",
                                   0.0,
@@ -229,6 +235,11 @@ class ReferenceComparison final : public BehaviorModel,
                                   0.0,
                                   "RMS point error.",
                                   {.unit = "length", .allowNonFinite = true, .output = true}};
+  Data<double> d_meanErrorAbsolute{this,
+                                   "meanErrorAbsolute",
+                                   0.0,
+                                   "Mean point error.",
+                                   {.unit = "length", .allowNonFinite = true, .output = true}};
   Data<double> d_comparedTime{this,
                               "comparedTime",
                               0.0,
@@ -255,7 +266,7 @@ class ReferenceComparison final : public BehaviorModel,
 
  private:
   struct Comparison {
-    double time, maxAbsolute, rmsAbsolute;
+    double time, maxAbsolute, rmsAbsolute, meanAbsolute;
     int worst;
   };
   bool checkParameters();

@@ -89,7 +89,7 @@ TEST(ReferenceComparison, PerturbedStateGivesTheExpectedError) {
                                            "analytic=\"patch\" referenceLength=\"2\"/>")));
   EXPECT_LT(comparisonOutput(scene, "maxErrorAbsolute"), 1e-17);
   // Point 9 off by (3, 4, 0) 1e-4 and point 12 by 1e-4 along z: max 5e-4, rms
-  // sqrt((25 + 1) 1e-8 / 16).
+  // sqrt((25 + 1) 1e-8 / 16), mean (5 + 1) 1e-4 / 16.
   auto& x = dofs(scene)->writeCoord(VecId::position());
   x[9] += Vec3d(3e-4, 4e-4, 0);
   x[12] += Vec3d(0, 0, 1e-4);
@@ -101,6 +101,8 @@ TEST(ReferenceComparison, PerturbedStateGivesTheExpectedError) {
   EXPECT_NEAR(comparisonOutput(scene, "maxError"), 2.5e-4, 1e-15);
   EXPECT_NEAR(comparisonOutput(scene, "rmsErrorAbsolute"), std::sqrt(26e-8 / 16), 1e-15);
   EXPECT_NEAR(comparisonOutput(scene, "rmsError"), std::sqrt(26e-8 / 16) / 2, 1e-15);
+  EXPECT_NEAR(comparisonOutput(scene, "meanErrorAbsolute"), 6e-4 / 16, 1e-15);
+  EXPECT_NEAR(comparisonOutput(scene, "meanError"), 6e-4 / 16 / 2, 1e-15);
   EXPECT_EQ(comparisonOutput(scene, "worstIndex"), 9);
   EXPECT_EQ(comparisonOutput(scene, "comparedTime"), 0.5);
   // The subset without the perturbed points has no error.
