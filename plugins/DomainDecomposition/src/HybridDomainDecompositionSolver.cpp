@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "HybridDomainDecompositionSolver.h"
 
+#include "simulation/MechanicalOperations.h"
+
 #include <sstream>
 
 #include "ConvergenceReport.h"
 #include "core/Message.h"
 #include "core/Node.h"
+#include "simulation/MechanicalOperations.h"
 #include "simulation/VecId.h"
 
 namespace stroma {
@@ -194,6 +197,10 @@ bool HybridDomainDecompositionSolver::readLoads(Loads& loads) {
   for (unsigned p : d_forceIndices.value()) loads.forceNodes.push_back(static_cast<int>(p));
   for (unsigned p : d_imposedIndices.value()) loads.imposedNodes.push_back(static_cast<int>(p));
   loads.forces.assign(d_forces.value().begin(), d_forces.value().end());
+  if (d_forceIndices.value().empty()) {
+    loads.forceNodes = m_fieldForceNodes;
+    loads.forces.assign(m_fieldForces.begin(), m_fieldForces.end());
+  }
   loads.imposedDisplacements.assign(d_imposedDisplacements.value().begin(),
                                     d_imposedDisplacements.value().end());
   return true;
@@ -234,13 +241,36 @@ void HybridDomainDecompositionSolver::publishZoneModels() {
   d_currentZoneModels.setValue(text);
 }
 
-void HybridDomainDecompositionSolver::solve(MechanicalOperations&, double) {
+bool HybridDomainDecompositionSolver::readFieldLoads(MechanicalOperations& mop, double dt) {
+  const VecId f = mop.allocDeriv();
+  MechanicalParams mp;
+  mp.dt = dt;
+  mop.computeForce(mp, f);
+  const auto& forces = m_state->readDeriv(f);
+  std::vector<int> nodes;
+  std::vector<Vec3d> values;
+  for (std::size_t i = 0; i < forces.size(); ++i)
+    if (!forces[i].isZero(0)) {
+      nodes.push_back(static_cast<int>(i));
+      values.push_back(forces[i]);
+    }
+  mop.freeVec(f);
+  const bool changed = nodes != m_fieldForceNodes || values != m_fieldForces;
+  m_fieldForceNodes = std::move(nodes);
+  m_fieldForces = std::move(values);
+  return changed;
+}
+
+void HybridDomainDecompositionSolver::solve(MechanicalOperations& mop, double dt) {
   if (!m_ready) return;
   followCuts();
   if (!m_ready) return;
+  // Without forceIndices the forces are those of the node's force fields (a ConstantForceField
+  // on the tip, as for any solver), read at every step.
+  const bool fieldLoads = d_forceIndices.value().empty() && readFieldLoads(mop, dt);
   const std::uint64_t loadVersion = d_forces.version() + d_forceIndices.version() +
                                     d_imposedIndices.version() + d_imposedDisplacements.version();
-  if (loadVersion != m_loadVersion) {
+  if (loadVersion != m_loadVersion || fieldLoads) {
     m_loadVersion = loadVersion;
     Loads loads;
     std::string error;

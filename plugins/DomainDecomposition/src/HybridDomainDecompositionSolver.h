@@ -76,7 +76,10 @@ class HybridDomainDecompositionSolver final : public OdeSolver {
       "per zone separated by spaces (nbZones)."};
   Data<std::vector<unsigned>> d_fixedIndices{
       this, "fixedIndices", {}, "Nodes held at their rest position."};
-  Data<std::vector<unsigned>> d_forceIndices{this, "forceIndices", {}, "Nodes loaded by `forces`."};
+  Data<std::vector<unsigned>> d_forceIndices{
+      this, "forceIndices", {},
+      "Nodes loaded by `forces`; empty: the forces of the node's force fields (a "
+      "ConstantForceField...), read at every step."};
   Data<std::vector<Vec3d>> d_forces{
       this, "forces", {}, "Force on each of forceIndices (nbForceIndices x 3).", {.unit = "N"}};
   Data<std::vector<unsigned>> d_imposedIndices{
@@ -158,6 +161,8 @@ class HybridDomainDecompositionSolver final : public OdeSolver {
                      std::vector<int>& zoneOfElement, int& zoneCount);
   bool readZoneModels(int zoneCount, std::vector<domaindecomposition::ZoneModel>& models);
   bool readLoads(domaindecomposition::Loads& loads);
+  /// The forces of the node's force fields now (m_fieldForce*); true when they changed.
+  bool readFieldLoads(MechanicalOperations& mop, double dt);
   void followCuts();
   void publishZoneModels();
 
@@ -167,6 +172,8 @@ class HybridDomainDecompositionSolver final : public OdeSolver {
   std::vector<Vec3d> m_rest;
   std::uint64_t m_revision = 0;
   std::uint64_t m_loadVersion = 0;
+  std::vector<int> m_fieldForceNodes;  // loads from the force fields (forceIndices empty)
+  std::vector<Vec3d> m_fieldForces;
   bool m_ready = false;
 };
 

@@ -183,6 +183,21 @@ TEST(HybridDomainDecompositionSolver, ZonesFromTheGroupsOfTheMeshFile) {
             "elementGroups");
 }
 
+TEST(HybridDomainDecompositionSolver, WithoutForceIndicesTheForceFieldsLoadTheBar) {
+  // A ConstantForceField on node 189 instead of forceIndices/forces: the same iterations.
+  const std::string zones =
+      R"(zoneBoxes="-1 -1 -1 1 1 0.05  -1 -1 0.05 1 1 0.08  -1 -1 0.08 1 1 1" )"
+      R"(iterationsPerStep="50")";
+  SceneHolder fields, listed;
+  ASSERT_TRUE(fields.load(
+      barScene(zones, R"(<ConstantForceField indices="189" forces="0 -0.01 0" />)")));
+  ASSERT_TRUE(listed.load(barScene(kThreeZones + R"(iterationsPerStep="50")")));
+  ASSERT_TRUE(fields.step(2));
+  ASSERT_TRUE(listed.step(2));
+  EXPECT_EQ(compareDisplacements(displacement(fields), displacement(listed)).max, 0.0);
+  EXPECT_GT(displacement(fields).norm(), 0.0);
+}
+
 TEST(HybridDomainDecompositionSolver, NoFixedNodeAndOnlyForcesIsRefused) {
   SceneHolder s;
   std::string scene = barScene(kThreeZones);
