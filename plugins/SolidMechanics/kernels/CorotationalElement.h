@@ -34,68 +34,98 @@
 
 namespace stroma::fem {
 
-/// Corotated displacement u = R^T x - X (m), up to a uniform translation that Ke ignores: it
-/// is computed relative to node 0, u_i = R^T (x_i - x_0) - (X_i - X_0), so that elements far
-/// from the origin keep their precision (energy error eps |Ke| |u|^2, not eps |Ke| |x|^2).
+/// Corotated displacement u = R^T x - X (m) of an element at rest positions X, up to a uniform
+/// translation that Ke ignores: it is computed relative to node 0,
+/// u_i = R^T (x_i - x_0) - (X_i - X_0), so that elements far from the origin keep their
+/// precision (energy error eps |Ke| |u|^2, not eps |Ke| |x|^2).
+template <int N>
+NodalVectors<N> computeCorotatedDisplacement(const NodalVectors<N>& rest, const Eigen::Matrix3d& R,
+                                             const NodalVectors<N>& x) {
+  const Eigen::Vector3d x0 = x.col(0), X0 = rest.col(0);
+  return R.transpose() * (x.colwise() - x0) - (rest.colwise() - X0);
+}
+
+/// Elastic force f = -R Ke (R^T x - X) (N), column i = force on node i.
+template <int N>
+NodalVectors<N> computeForce(const ElementMatrix<N>& Ke, const NodalVectors<N>& rest,
+                             const Eigen::Matrix3d& R, const NodalVectors<N>& x) {
+  const NodalVectors<N> u = computeCorotatedDisplacement<N>(rest, R, x);
+  NodalVectors<N> stiffnessTimesU;
+  Eigen::Map<ElementVector<N>>(stiffnessTimesU.data()).noalias() = Ke * asElementVector<N>(u);
+  return -R * stiffnessTimesU;
+}
+
+/// Force differential df = -R Ke R^T dx (N) of a position differential dx (m): the product
+/// with the corotational stiffness, without assembling it.
+template <int N>
+NodalVectors<N> computeDForce(const ElementMatrix<N>& Ke, const Eigen::Matrix3d& R,
+                              const NodalVectors<N>& dx) {
+  const NodalVectors<N> localDx = R.transpose() * dx;
+  NodalVectors<N> localDf;
+  Eigen::Map<ElementVector<N>>(localDf.data()).noalias() = Ke * asElementVector<N>(localDx);
+  return -R * localDf;
+}
+
+/// Corotational stiffness K = R_N Ke R_N^T (3N x 3N, N/m), R_N = diag(R, ..., R), for a
+/// symmetric Ke. Computed as two products by 3N x 3 column panels, which vectorize along the
+/// 3N rows: A = Ke R_N^T, then K = A^T R_N^T, since A^T = R_N Ke^T = R_N Ke. Every Ke of the
+/// kernels is symmetric up to round-off (sums of B^T C B), so K is R Ke R^T to round-off
+/// (about 2 times faster than 3 x 3 block products, measured on hexahedra).
+template <int N>
+ElementMatrix<N> computeStiffness(const ElementMatrix<N>& Ke, const Eigen::Matrix3d& R) {
+  const Eigen::Matrix3d Rt = R.transpose();
+  ElementMatrix<N> A;
+  for (int j = 0; j < N; ++j)
+    A.template middleCols<3>(3 * j).noalias() = Ke.template middleCols<3>(3 * j) * Rt;
+  const ElementMatrix<N> At = A.transpose();
+  ElementMatrix<N> K;
+  for (int j = 0; j < N; ++j)
+    K.template middleCols<3>(3 * j).noalias() = At.template middleCols<3>(3 * j) * Rt;
+  return K;
+}
+
+/// Potential energy E = 1/2 u^T Ke u (J) with u = R^T x - X.
+template <int N>
+double computeEnergy(const ElementMatrix<N>& Ke, const NodalVectors<N>& rest,
+                     const Eigen::Matrix3d& R, const NodalVectors<N>& x) {
+  const NodalVectors<N> u = computeCorotatedDisplacement<N>(rest, R, x);
+  const auto uVector = asElementVector<N>(u);
+  return 0.5 * uVector.dot(Ke * uVector);
+}
+
+// The same on an element's constants (`restPositions`, `stiffness`).
+
 template <class Element>
 typename Element::Vectors computeCorotatedDisplacement(const Element& element,
                                                        const Eigen::Matrix3d& R,
                                                        const typename Element::Vectors& x) {
   static_assert(std::is_same_v<typename Element::Vectors, NodalVectors<Element::nodeCount>>,
                 "Element must expose nodeCount and Vectors = NodalVectors<nodeCount>.");
-  const Eigen::Vector3d x0 = x.col(0), X0 = element.restPositions.col(0);
-  return R.transpose() * (x.colwise() - x0) - (element.restPositions.colwise() - X0);
+  return computeCorotatedDisplacement<Element::nodeCount>(element.restPositions, R, x);
 }
 
-/// Elastic force f = -R Ke (R^T x - X) (N), column i = force on node i.
 template <class Element>
 typename Element::Vectors computeForce(const Element& element, const Eigen::Matrix3d& R,
                                        const typename Element::Vectors& x) {
-  constexpr int N = Element::nodeCount;
-  const NodalVectors<N> u = computeCorotatedDisplacement(element, R, x);
-  NodalVectors<N> stiffnessTimesU;
-  Eigen::Map<ElementVector<N>>(stiffnessTimesU.data()).noalias() =
-      element.stiffness * asElementVector<N>(u);
-  return -R * stiffnessTimesU;
+  return computeForce<Element::nodeCount>(element.stiffness, element.restPositions, R, x);
 }
 
-/// Force differential df = -R Ke R^T dx (N) of a position differential dx (m): the product
-/// with the corotational stiffness, without assembling it.
 template <class Element>
 typename Element::Vectors computeDForce(const Element& element, const Eigen::Matrix3d& R,
                                         const typename Element::Vectors& dx) {
-  constexpr int N = Element::nodeCount;
-  const NodalVectors<N> localDx = R.transpose() * dx;
-  NodalVectors<N> localDf;
-  Eigen::Map<ElementVector<N>>(localDf.data()).noalias() =
-      element.stiffness * asElementVector<N>(localDx);
-  return -R * localDf;
+  return computeDForce<Element::nodeCount>(element.stiffness, R, dx);
 }
 
-/// Corotational stiffness K = R Ke R^T (3N x 3N, N/m), computed 3 x 3 block by block.
 template <class Element>
 ElementMatrix<Element::nodeCount> computeStiffness(const Element& element,
                                                    const Eigen::Matrix3d& R) {
-  constexpr int N = Element::nodeCount;
-  ElementMatrix<N> K;
-  for (int j = 0; j < N; ++j) {
-    for (int i = 0; i < N; ++i) {
-      const Eigen::Matrix3d blockTimesRt =
-          element.stiffness.template block<3, 3>(3 * i, 3 * j) * R.transpose();
-      K.template block<3, 3>(3 * i, 3 * j).noalias() = R * blockTimesRt;
-    }
-  }
-  return K;
+  return computeStiffness<Element::nodeCount>(element.stiffness, R);
 }
 
-/// Potential energy E = 1/2 u^T Ke u (J) with u = R^T x - X.
 template <class Element>
 double computeEnergy(const Element& element, const Eigen::Matrix3d& R,
                      const typename Element::Vectors& x) {
-  constexpr int N = Element::nodeCount;
-  const NodalVectors<N> u = computeCorotatedDisplacement(element, R, x);
-  const auto uVector = asElementVector<N>(u);
-  return 0.5 * uVector.dot(element.stiffness * uVector);
+  return computeEnergy<Element::nodeCount>(element.stiffness, element.restPositions, R, x);
 }
 
 }  // namespace stroma::fem

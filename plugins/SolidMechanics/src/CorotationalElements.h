@@ -8,6 +8,15 @@
 // Layout. Per-element constants (rest shape, Ke, rest frame) are computed once into one
 // contiguous array; rotations and per-corner results are arrays of the step, sized once.
 //
+// Shared constants (hexahedra). Elements that are the same rest shape up to a translation,
+// with the same Young modulus, share one entry of the constants (kernels/EqualElements.h): a
+// regular or sparse grid has one entry for all its elements, so forces, products and assembly
+// read one 24 x 24 Ke from cache instead of one per element from memory (151 MB for 32^3
+// elements). The constants read by the kernels (Ke, rest frame, centre gradients, volume) do
+// not depend on a translation; each element keeps its own rest positions (restPositions(e)),
+// from which its displacement is taken, so a rest state gives exactly zero force. The results
+// equal those of one entry per element to round-off (EqualElements.h bounds the difference).
+//
 // Determinism. Every loop over elements writes only its own element's slots (its rotation, the
 // N "corner" vectors of its result); a second loop over vertices then sums, for each vertex,
 // the corners of the elements around it in increasing element order (the vertex -> corners
@@ -29,12 +38,14 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
 #include "SolidMechanics/kernels/CorotationalElement.h"
 #include "SolidMechanics/kernels/CorotationalHexahedron.h"
 #include "SolidMechanics/kernels/CorotationalTetrahedron.h"
+#include "SolidMechanics/kernels/EqualElements.h"
 #include "SolidMechanics/kernels/IsotropicMaterial.h"
 #include "SolidMechanics/kernels/VolumetricSplit.h"
 #include "core/ThreadPool.h"
@@ -56,6 +67,10 @@ class CorotationalElements {
   static_assert(N == 4 || N == 8,
                 "CorotationalElements takes fem::CorotationalTetrahedron or "
                 "fem::CorotationalHexahedron.");
+  /// Hexahedra share their constants between equal elements; tetrahedra keep one entry per
+  /// element (their forces and products use per-element factors, AveragedNodalPressure reads
+  /// constants()[e]).
+  static constexpr bool kSharesConstants = N == 8;
 
   /// Work per task of the parallel loops, chosen so that a task lasts 10 to 100 us: a loop no
   /// longer than one task runs on the calling thread alone, since waking a second thread and
@@ -84,7 +99,9 @@ class CorotationalElements {
   void setElements(std::span<const Indices> elements, std::size_t pointCount) {
     m_elements.assign(elements.begin(), elements.end());
     const std::size_t count = m_elements.size();
-    m_constants.assign(count, Element{});
+    m_constants.assign(kSharesConstants ? 0 : count, Element{});
+    m_constantIndex.assign(kSharesConstants ? count : 0, 0);
+    m_restPositions.assign(kSharesConstants ? count : 0, Vectors::Zero());
     m_rotations.assign(count, Eigen::Matrix3d::Identity());
     m_corners.assign(count * N, Vec3d::Zero());
     m_matrices.clear();
@@ -98,10 +115,16 @@ class CorotationalElements {
   /// rotations and stiffness factors of the kept elements move with them and nothing is
   /// recomputed; the vertex adjacency is rebuilt (a counting sort, linear in the elements, no
   /// element computation). The results equal those of setElements and computeConstants on the
-  /// remaining elements, bit for bit.
+  /// remaining elements, bit for bit for tetrahedra; to round-off for hexahedra (a shared
+  /// entry may have been computed from an element of its group that is gone).
   void removeElements(std::span<const Index> removed) {
     applyRemoval(m_elements, removed);
-    applyRemoval(m_constants, removed);
+    if constexpr (kSharesConstants) {
+      applyRemoval(m_constantIndex, removed);  // the shared entries stay, some maybe unused
+      applyRemoval(m_restPositions, removed);
+    } else {
+      applyRemoval(m_constants, removed);
+    }
     applyRemoval(m_rotations, removed);
     if constexpr (N == 4) applyRemoval(m_stiffnessFactors, removed);
     m_corners.resize(m_elements.size() * N);
@@ -112,7 +135,29 @@ class CorotationalElements {
   std::size_t size() const { return m_elements.size(); }
   std::size_t pointCount() const { return m_vertexOffsets.size() - 1; }
   const std::vector<Indices>& elements() const { return m_elements; }
-  const std::vector<Element>& constants() const { return m_constants; }
+  /// The constants of element e (shared with the elements equal to it, for hexahedra).
+  const Element& constant(std::size_t e) const {
+    if constexpr (kSharesConstants)
+      return m_constants[m_constantIndex[e]];
+    else
+      return m_constants[e];
+  }
+  /// Tetrahedra: the constants of each element, in element order.
+  const std::vector<Element>& constants() const
+    requires(!kSharesConstants)
+  {
+    return m_constants;
+  }
+  /// The rest positions of element e (m).
+  const Vectors& restPositions(std::size_t e) const {
+    if constexpr (kSharesConstants)
+      return m_restPositions[e];
+    else
+      return m_constants[e].restPositions;
+  }
+  /// How many distinct constants are stored (for hexahedra: 1 for a uniform grid; for
+  /// tetrahedra: one per element).
+  std::size_t distinctConstantCount() const { return m_constants.size(); }
   /// The rotation of each element at the positions of the last addForce (or updateRotations).
   const std::vector<Eigen::Matrix3d>& rotations() const { return m_rotations; }
 
@@ -124,7 +169,8 @@ class CorotationalElements {
 
   /// Computes every element's constants from the rest positions, the Young modulus (one value,
   /// or one per element) and Poisson's ratio (both valid: checked by the caller). Degenerate
-  /// elements get Ke = 0 and are listed. No allocation besides the report.
+  /// elements get Ke = 0 and are listed. Hexahedra: equal elements are found first and their
+  /// constants computed once (allocates the groups).
   RestShapeReport computeConstants(std::span<const Vec3d> rest,
                                    std::span<const double> youngModulus, double poissonRatio,
                                    const ThreadPool& pool) {
@@ -137,40 +183,60 @@ class CorotationalElements {
                  : fem::computeDeviatoricElasticityMatrix(lame);
     };
     const fem::Matrix6d uniformC = elasticity(youngModulus[0]);
-    // C(E) = E C(1) for one Poisson ratio: G carries sqrt(E_e |V_e|).
-    if constexpr (N == 4) m_unitElasticity = elasticity(1.0);
-    std::vector<char>& degenerate = m_degenerate;
-    degenerate.assign(size(), 0);
-    pool.parallelFor(size(), kGrain, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t e = begin; e < end; ++e) {
-        const double E = youngModulus[uniform ? 0 : e];
-        const fem::Matrix6d C = uniform ? uniformC : elasticity(E);
-        const Vectors X = gather(rest, e);
-        Element& element = m_constants[e];
-        fem::ElementStatus status;
-        if constexpr (N == 4) {
-          status = fem::computeCorotationalTetrahedron(X, C, element);
-        } else {
-          status = fem::computeCorotationalHexahedron(X, C, element);
-          if (status == fem::ElementStatus::ok &&
-              m_volumetric == fem::VolumetricStiffness::meanDilatation)
-            status = addMeanDilatation(X, fem::computeLameParameters(E, poissonRatio), element);
-        }
-        if (status != fem::ElementStatus::ok) {
-          // Left out of the mechanics: zero stiffness, rest shape kept for the rotations.
-          element = Element{};
-          element.restPositions = X;
-          degenerate[e] = 1;
-        }
-        if constexpr (N == 4)
-          m_stiffnessFactors[e] = fem::computeStiffnessFactor(element, degenerate[e] ? 0.0 : E);
+    // One entry of the constants from rest positions X and modulus E; true when degenerate.
+    const auto computeEntry = [&](const Vectors& X, double E, Element& element) {
+      const fem::Matrix6d C = uniform ? uniformC : elasticity(E);
+      fem::ElementStatus status;
+      if constexpr (N == 4) {
+        status = fem::computeCorotationalTetrahedron(X, C, element);
+      } else {
+        status = fem::computeCorotationalHexahedron(X, C, element);
+        if (status == fem::ElementStatus::ok &&
+            m_volumetric == fem::VolumetricStiffness::meanDilatation)
+          status = addMeanDilatation(X, fem::computeLameParameters(E, poissonRatio), element);
       }
-    });
+      if (status == fem::ElementStatus::ok) return false;
+      // Left out of the mechanics: zero stiffness, rest shape kept for the rotations.
+      element = Element{};
+      element.restPositions = X;
+      return true;
+    };
+    std::vector<char>& degenerate = m_degenerate;  // per entry of m_constants
+    if constexpr (kSharesConstants) {
+      pool.parallelFor(size(), kGrain, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t e = begin; e < end; ++e) m_restPositions[e] = gather(rest, e);
+      });
+      const fem::ElementGroups groups =
+          fem::groupEqualElements<N>(std::span<const Vectors>(m_restPositions), youngModulus);
+      m_constantIndex.assign(groups.groupOf.begin(), groups.groupOf.end());
+      m_constants.assign(groups.representative.size(), Element{});
+      degenerate.assign(m_constants.size(), 0);
+      pool.parallelFor(m_constants.size(), kGrain, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t g = begin; g < end; ++g) {
+          const std::size_t e = groups.representative[g];
+          degenerate[g] = computeEntry(m_restPositions[e], youngModulus[uniform ? 0 : e],
+                                       m_constants[g]);
+        }
+      });
+    } else {
+      // C(E) = E C(1) for one Poisson ratio: G carries sqrt(E_e |V_e|).
+      m_unitElasticity = elasticity(1.0);
+      degenerate.assign(size(), 0);
+      pool.parallelFor(size(), kGrain, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t e = begin; e < end; ++e) {
+          const double E = youngModulus[uniform ? 0 : e];
+          degenerate[e] = computeEntry(gather(rest, e), E, m_constants[e]);
+          m_stiffnessFactors[e] =
+              fem::computeStiffnessFactor(m_constants[e], degenerate[e] ? 0.0 : E);
+        }
+      });
+    }
     RestShapeReport report;
     for (std::size_t e = 0; e < size(); ++e) {
-      if (degenerate[e])
+      const std::size_t entry = kSharesConstants ? m_constantIndex[e] : e;
+      if (degenerate[entry])
         report.degenerate.push_back(static_cast<Index>(e));
-      else if (m_constants[e].restVolume < 0)
+      else if (m_constants[entry].restVolume < 0)
         report.inverted.push_back(static_cast<Index>(e));
     }
     return report;
@@ -182,7 +248,7 @@ class CorotationalElements {
                        const ThreadPool& pool) {
     pool.parallelFor(size(), kGrain, [&](std::size_t begin, std::size_t end) {
       for (std::size_t e = begin; e < end; ++e)
-        m_rotations[e] = fem::computeRotation(method, m_constants[e], gather(x, e));
+        m_rotations[e] = fem::computeRotation(method, constant(e), gather(x, e));
     });
   }
 
@@ -191,14 +257,15 @@ class CorotationalElements {
                 const ThreadPool& pool) {
     forEachElement(pool, kGrain, [&](std::size_t e, Eigen::Map<Vectors> corner) {
       const Vectors xe = gather(x, e);
-      const Eigen::Matrix3d R = fem::computeRotation(method, m_constants[e], xe);
+      const Element& element = constant(e);
+      const Eigen::Matrix3d R = fem::computeRotation(method, element, xe);
       m_rotations[e] = R;
       if constexpr (N == 4)
         storeRows(corner, fem::computeFactoredForce(m_stiffnessFactors[e], m_unitElasticity, R,
                                                     fem::toRows(xe),
-                                                    fem::toRows(m_constants[e].restPositions)));
+                                                    fem::toRows(element.restPositions)));
       else
-        corner = fem::computeForce(m_constants[e], R, xe);
+        corner = fem::computeForce<N>(element.stiffness, m_restPositions[e], R, xe);
     });
     sumCorners(f, 1.0, pool);
   }
@@ -213,7 +280,7 @@ class CorotationalElements {
       });
     } else {
       forEachElement(pool, kProductGrain, [&](std::size_t e, Eigen::Map<Vectors> corner) {
-        corner = fem::computeDForce(m_constants[e], m_rotations[e], gather(dx, e));
+        corner = fem::computeDForce<N>(constant(e).stiffness, m_rotations[e], gather(dx, e));
       });
     }
     sumCorners(df, kFactor, pool);
@@ -230,7 +297,8 @@ class CorotationalElements {
       const std::size_t count = std::min(kMatrixBatch, size() - first);
       pool.parallelFor(count, kGrain / 4, [this, first](std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k)
-          m_matrices[k] = fem::computeStiffness(m_constants[first + k], m_rotations[first + k]);
+          m_matrices[k] =
+              fem::computeStiffness<N>(constant(first + k).stiffness, m_rotations[first + k]);
       });
       for (std::size_t k = 0; k < count; ++k)
         addElementMatrix(matrix, offset, first + k, -kFactor, m_matrices[k]);
@@ -258,8 +326,9 @@ class CorotationalElements {
     double total = 0;
     for (std::size_t e = 0; e < size(); ++e) {
       const Vectors xe = gather(x, e);
-      total +=
-          fem::computeEnergy(m_constants[e], fem::computeRotation(method, m_constants[e], xe), xe);
+      const Element& element = constant(e);
+      total += fem::computeEnergy<N>(element.stiffness, restPositions(e),
+                                     fem::computeRotation(method, element, xe), xe);
     }
     return total;
   }
@@ -361,13 +430,17 @@ class CorotationalElements {
   }
 
   std::vector<Indices> m_elements;
+  // Hexahedra: the distinct constants, m_constantIndex[e] the entry of element e. Tetrahedra:
+  // one entry per element, in element order.
   std::vector<Element> m_constants;
+  std::vector<std::uint32_t> m_constantIndex;  // (elements, hexahedra)
+  std::vector<Vectors> m_restPositions;        // (elements, hexahedra) X (m)
   std::vector<Eigen::Matrix3d> m_rotations;
   std::vector<Vec3d> m_corners;           // (elements x N): element e, node i at e * N + i
   std::vector<Index> m_vertexOffsets{0};  // (points + 1) into m_vertexCorners
   std::vector<Index> m_vertexCorners;     // corners around each vertex, increasing
   std::vector<Matrix> m_matrices;         // (kMatrixBatch) scratch of addKToMatrix
-  std::vector<char> m_degenerate;         // (elements) scratch of computeConstants
+  std::vector<char> m_degenerate;         // (constants) scratch of computeConstants
   // Tetrahedra: Ke = B(G_e)^T C B(G_e) with G_e = sqrt(E_e |V_e|) grad N and C = C(E = 1).
   std::vector<fem::TetrahedronRows> m_stiffnessFactors;  // (elements) G_e, by rows
   fem::Matrix6d m_unitElasticity = fem::Matrix6d::Zero();

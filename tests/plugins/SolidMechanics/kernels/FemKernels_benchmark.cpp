@@ -89,6 +89,20 @@ void BM_TetrahedronStiffness(benchmark::State& state) {
   setPerElement(state, mesh.elements.size());
 }
 
+/// R Ke R^T of hexahedra sharing one Ke (a grid, CorotationalElements), rotations varying.
+void BM_HexahedronStiffness(benchmark::State& state) {
+  const auto& mesh = hexahedra();
+  const Matrix24d& Ke = mesh.elements.front().stiffness;
+  Matrix24d K;
+  for (auto _ : state) {
+    for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
+      K = computeStiffness<8>(Ke, mesh.rotations[e]);
+      benchmark::DoNotOptimize(K.data());
+    }
+  }
+  setPerElement(state, mesh.elements.size());
+}
+
 /// df = -R Ke R^T dx, what addDForce does per element (matrix-free CG iteration).
 void BM_TetrahedronDForce(benchmark::State& state) {
   const auto& mesh = tetrahedra();
@@ -106,6 +120,7 @@ constexpr int kSvd = static_cast<int>(RotationMethod::svd);
 BENCHMARK(BM_TetrahedronForce)->DenseRange(kSmall, kSvd);
 BENCHMARK(BM_HexahedronForce)->DenseRange(kSmall, kSvd);
 BENCHMARK(BM_TetrahedronStiffness);
+BENCHMARK(BM_HexahedronStiffness);
 BENCHMARK(BM_TetrahedronDForce);
 
 }  // namespace
