@@ -293,18 +293,19 @@ struct KernelTable52 {
     // Setup with a new pattern (P^T, Galerkin products), then a numeric update alone (what a
     // solve with coarseUpdateInterval = 1 redoes at every step).
     double start = cpuSeconds();
-    cycle.setOperators(A, P, true);
+    cycle.setOperators(A, P, multigrid::OperatorUpdate{});
     setupSeconds = cpuSeconds() - start;
     start = cpuSeconds();
-    cycle.setOperators(A, P, false, true);
+    cycle.setOperators(A, P, {.patternChanged = false, .fineSamePattern = true});
     updateSeconds = cpuSeconds() - start;
+    singleCycle.setOperators(A, P, {.precision = multigrid::SymmetricBlockMatrix::Precision::single});
     ready = true;
   }
   bool ready = false;
   multigrid::SparseMatrix A;
   Eigen::VectorXd b;
   std::vector<multigrid::SparseMatrix> P;
-  multigrid::MultigridCycle cycle;
+  multigrid::MultigridCycle cycle, singleCycle;  ///< level matrices in double, in single
   double setupSeconds = 0, updateSeconds = 0;
   std::map<std::string, double> error, seconds;
 };
@@ -321,11 +322,17 @@ struct KernelMethod {
   int cycles;        ///< multigrid: V-cycles, or flexible-CG iterations when fcg
   bool full, fcg;
   multigrid::CycleSettings settings;
+  bool cascadic = false;  ///< one cascadic cycle (settings.levelSmoothing per level)
+  /// Plain CG: multiply with the 3 x 3 block copy of K (SymmetricBlockMatrix.h) instead of Eigen's
+  /// storage; multigrid: cycles on level matrices stored in single precision.
+  bool single = false, blocks = false;
 };
 
 const KernelMethod kKernelMethods[] = {
     {"CG10", 10, 0, false, false, {}},
     {"CG150", 150, 0, false, false, {}},
+    {"CG150-blocks", 150, 0, false, false, {}, false, false, true},
+    {"CG150-blocks-single", 150, 0, false, false, {}, false, true, true},
     {"MG4-V(7)", 0, 1, false, false, {7, 150, false, true}},
     {"FMG4(7)", 0, 1, true, false, {7, 150, false, true}},
     {"FMG4(2)-LDL", 0, 1, true, false, {2, 150, true, true}},
@@ -333,6 +340,23 @@ const KernelMethod kKernelMethods[] = {
     {"FCG1-V(2)-LDL", 0, 1, false, true, {2, 150, true, true}},
     {"FCG2-V(1)-LDL", 0, 2, false, true, {1, 150, true, true}},
     {"FCG2-V(2)-LDL", 0, 2, false, true, {2, 150, true, true}},
+    // Level matrices in single precision (3 x 3 blocks; SymmetricBlockMatrix.h).
+    {"FMG4(1)-LDL-single", 0, 1, true, false, {1, 150, true, true}, false, true},
+    // Per-level counts: no smoothing on the fine level (its V-cycle is the coarse correction
+    // alone), 2 on the coarser ones.
+    {"FMG4(0,2)-LDL-single", 0, 1, true, false, {1, 150, true, true, {0, 2}}, false, true},
+    // The fine level only receives the prolongation of the 16^3 level's full cycle
+    // (levelCycles 0 1): its error is that of the 16^3 solve plus the 16^3 discretization's
+    // (C4(0,300): the 16^3 level nearly solved, 0.49 %).
+    {"FMG4c(0,1)(0,2)-LDL-single", 0, 1, true, false, {1, 150, true, true, {0, 2}, {0, 1}}, false,
+     true},
+    {"FMG4c(0,1)(0,3)-LDL-single", 0, 1, true, false, {1, 150, true, true, {0, 3}, {0, 1}}, false,
+     true},
+    {"FMG4c(0,2)(0,2)-LDL-single", 0, 1, true, false, {1, 150, true, true, {0, 2}, {0, 2}}, false,
+     true},
+    // Cascadic cycles: CG on each level from the prolongation, no coarse correction going back.
+    {"C4(0,300)-LDL", 0, 1, false, false, {0, 150, true, true, {0, 300}}, true},
+    {"C4(4,16)-LDL-single", 0, 1, false, false, {0, 150, true, true, {4, 16}}, true, true},
 };
 
 void kernelTable52Method(benchmark::State& state, const KernelMethod& method) {
@@ -347,18 +371,26 @@ void kernelTable52Method(benchmark::State& state, const KernelMethod& method) {
   for (auto _ : state) {
     x.setZero(k.b.size());
     const double start = cpuSeconds();
-    if (method.cgIterations > 0) {
+    multigrid::MultigridCycle& cycle = method.single ? k.singleCycle : k.cycle;
+    if (method.cgIterations > 0 && method.blocks) {
+      multigrid::MultigridCycle::conjugateGradient(cycle.blocks(0), k.b, x, method.cgIterations,
+                                                   0.0, r, d, q);
+    } else if (method.cgIterations > 0) {
       multigrid::MultigridCycle::conjugateGradient(k.A, k.b, x, method.cgIterations, 0.0, r, d, q);
+    } else if (method.cascadic) {
+      cycle.cascadicCycle(x, k.b, method.settings);
     } else if (method.fcg) {
       double residual = 0;
-      k.cycle.flexibleConjugateGradient(k.A, k.b, x, method.cycles, 0.0, method.full,
+      cycle.flexibleConjugateGradient(k.A, k.b, x, method.cycles, 0.0,
+                                        method.full ? multigrid::CycleKind::full
+                                                    : multigrid::CycleKind::V,
                                         method.settings, residual);
     } else {
       for (int c = 0; c < method.cycles; ++c) {
         if (c == 0 && method.full)
-          k.cycle.fullCycle(x, k.b, method.settings);
+          cycle.fullCycle(x, k.b, method.settings);
         else
-          k.cycle.vCycle(0, x, k.b, method.settings);
+          cycle.vCycle(0, x, k.b, method.settings);
       }
     }
     best = std::min(best, cpuSeconds() - start);
@@ -378,6 +410,31 @@ void kernelTable52Method(benchmark::State& state, const KernelMethod& method) {
     state.counters["setup_cpu_ms"] = 1e3 * k.setupSeconds;
     state.counters["update_cpu_ms"] = 1e3 * k.updateSeconds;
   }
+}
+
+/// Table52Assembled/Product-<storage>: one product with the fine K, least processor time of 20:
+/// Eigen's compressed columns, the 3 x 3 block copy in double and in single precision.
+void kernelTable52Product(benchmark::State& state, int storage) {
+  KernelTable52& k = kernelTable52();
+  if (!k.ready) {
+    state.SkipWithError("the table 5.2 scene or its grid did not load");
+    return;
+  }
+  Eigen::VectorXd y;
+  double best = 1e300;
+  for (auto _ : state) {
+    const double start = cpuSeconds();
+    if (storage == 0)
+      multigrid::multiply(k.A, k.b, y);
+    else
+      multigrid::multiply((storage == 1 ? k.cycle : k.singleCycle).blocks(0), k.b, y);
+    best = std::min(best, cpuSeconds() - start);
+    benchmark::DoNotOptimize(y.data());
+  }
+  state.counters["cpu_ms"] = 1e3 * best;
+  state.counters["MB_read"] =
+      1e-6 * double(storage == 0 ? 12 * k.A.nonZeros()
+                                 : (storage == 1 ? 76 : 40) * k.cycle.blocks(0).blockCount());
 }
 
 /// Table52Assembled/Chart: relative error against processor time, plain CG after 10 to 300
@@ -468,6 +525,25 @@ const Beam049Setting kBeam049Settings[] = {
     {"FCG3-L2direct-s3-stale",
      "conjugateGradient=\"true\" iterations=\"3\" levels=\"2\" directCoarseSolve=\"true\" "
      "smoothingIterations=\"3\" coarseUpdateInterval=\"0\""},
+    // The scene's setting with the level matrices in single precision (3 x 3 blocks).
+    {"FCG3-L2direct-s4-stale-single",
+     "conjugateGradient=\"true\" iterations=\"3\" levels=\"2\" directCoarseSolve=\"true\" "
+     "smoothingIterations=\"4\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\""},
+    {"FCG3-L2direct-s(4,8)-stale-single",
+     "conjugateGradient=\"true\" iterations=\"3\" levels=\"2\" directCoarseSolve=\"true\" "
+     "levelSmoothing=\"4 8\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\""},
+    {"FCG3-L2direct-s(3,8)-stale-single",
+     "conjugateGradient=\"true\" iterations=\"3\" levels=\"2\" directCoarseSolve=\"true\" "
+     "levelSmoothing=\"3 8\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\""},
+    {"FCG2-L2direct-s(4,8)-stale-single",
+     "conjugateGradient=\"true\" iterations=\"2\" levels=\"2\" directCoarseSolve=\"true\" "
+     "levelSmoothing=\"4 8\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\""},
+    {"FCG3-L3direct-s(3,6)-stale-single",
+     "conjugateGradient=\"true\" iterations=\"3\" levels=\"3\" directCoarseSolve=\"true\" "
+     "levelSmoothing=\"3 6\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\""},
+    {"FCG3-L1direct-s3-stale-single",
+     "conjugateGradient=\"true\" iterations=\"3\" levels=\"1\" directCoarseSolve=\"true\" "
+     "smoothingIterations=\"3\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\""},
 };
 
 void beam049(benchmark::State& state, const Beam049Setting& setting) {
@@ -548,6 +624,13 @@ void registerAll() {
         [&method](benchmark::State& state) { kernelTable52Method(state, method); })
         ->Unit(benchmark::kMillisecond)
         ->Iterations(5);
+  const char* const storages[] = {"eigen", "blocks-double", "blocks-single"};
+  for (int storage = 0; storage < 3; ++storage)
+    benchmark::RegisterBenchmark(
+        (std::string("Table52Assembled/Product-") + storages[storage]).c_str(),
+        [storage](benchmark::State& state) { kernelTable52Product(state, storage); })
+        ->Unit(benchmark::kMillisecond)
+        ->Iterations(20);
   benchmark::RegisterBenchmark("Table52Assembled/Chart", kernelTable52Chart)->Iterations(1);
   for (const Beam049Setting& setting : kBeam049Settings)
     benchmark::RegisterBenchmark((std::string("Beam049/") + setting.name).c_str(),

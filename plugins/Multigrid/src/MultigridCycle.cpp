@@ -6,57 +6,37 @@
 namespace stroma::multigrid {
 
 void MultigridCycle::setOperators(const SparseMatrix& A0, const std::vector<SparseMatrix>& P,
-                                  bool patternChanged, bool updateCoarse) {
+                                  const OperatorUpdate& update) {
   m_A0 = &A0;
   m_P.clear();
   for (const SparseMatrix& p : P) m_P.push_back(&p);
   m_coarse.resize(P.size());
+  m_blocks.resize(P.size() + 1);
   m_work.resize(P.size() + 1);
+  bool updateCoarse = update.updateCoarse;
   // P^T once per pattern (the Galerkin products and the restrictions use it).
-  if (patternChanged || m_PT.size() != P.size()) {
+  if (update.patternChanged || m_PT.size() != P.size()) {
     m_PT.resize(P.size());
     for (std::size_t l = 0; l < P.size(); ++l) m_PT[l] = P[l].transpose();
     m_directAnalyzed = false;
     updateCoarse = true;
   }
-  if (!updateCoarse) return;
+  const bool precisionChanged = m_blocks[0].precision() != update.precision;
+  m_blocks[0].assign(A0, update.precision, update.fineSamePattern && !precisionChanged);
+  if (!updateCoarse) {
+    if (!precisionChanged) return;
+    for (std::size_t l = 0; l < P.size(); ++l)
+      m_blocks[l + 1].assign(m_coarse[l], update.precision, false);
+    return;
+  }
   m_directFactorized = false;
   // Galerkin operators, finest to coarsest.
   for (std::size_t l = 0; l < P.size(); ++l) {
     const SparseMatrix& fine = l == 0 ? A0 : m_coarse[l - 1];
     m_AP = fine * P[l];
     m_coarse[l] = m_PT[l] * m_AP;
+    m_blocks[l + 1].assign(m_coarse[l], update.precision, false);
   }
-}
-
-int MultigridCycle::conjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b,
-                                      Eigen::VectorXd& x, int iterations, double tolerance,
-                                      Eigen::VectorXd& r, Eigen::VectorXd& p, Eigen::VectorXd& q) {
-  // Coarse corrections and preconditioning start from zero: r = b without a product.
-  if ((x.array() == 0).all())
-    r = b;
-  else
-    r.noalias() = b - A * x;
-  const double stop = tolerance * tolerance * b.squaredNorm();
-  double rho = r.squaredNorm();
-  if (rho <= stop || rho == 0) return 0;
-  p = r;
-  q.resize(b.size());
-  int done = 0;
-  while (done < iterations) {
-    q.noalias() = A * p;
-    const double den = p.dot(q);
-    if (!(den > 0)) break;
-    const double alpha = rho / den;
-    x += alpha * p;
-    r -= alpha * q;
-    ++done;
-    const double rhoNext = r.squaredNorm();
-    if (rhoNext <= stop) break;
-    p = r + (rhoNext / rho) * p;
-    rho = rhoNext;
-  }
-  return done;
 }
 
 void MultigridCycle::solveCoarsest(Eigen::VectorXd& x, const Eigen::VectorXd& b,
@@ -65,7 +45,7 @@ void MultigridCycle::solveCoarsest(Eigen::VectorXd& x, const Eigen::VectorXd& b,
   const SparseMatrix& A = matrix(level);
   if (!settings.directCoarseSolve || level == 0) {
     Work& w = m_work[level];
-    conjugateGradient(A, b, x, settings.coarseIterations, 1e-12, w.r, w.p, w.q);
+    conjugateGradient(blocks(level), b, x, settings.coarseIterations, 1e-12, w.r, w.p, w.q);
     return;
   }
   // Factorized once per operator update (every cycle of every solve until the next update
@@ -86,7 +66,7 @@ void MultigridCycle::solveCoarsest(Eigen::VectorXd& x, const Eigen::VectorXd& b,
     x = m_direct.solve(b);
   } else {
     Work& w = m_work[level];
-    conjugateGradient(A, b, x, settings.coarseIterations, 1e-12, w.r, w.p, w.q);
+    conjugateGradient(blocks(level), b, x, settings.coarseIterations, 1e-12, w.r, w.p, w.q);
   }
 }
 
@@ -97,12 +77,12 @@ void MultigridCycle::vCycle(int level, Eigen::VectorXd& x, const Eigen::VectorXd
     return;
   }
   Work& w = m_work[level];
-  const SparseMatrix& A = matrix(level);
+  const SymmetricBlockMatrix& A = blocks(level);
   const SparseMatrix& P = *m_P[level];
   // 1. pre-smoothing; CG leaves the residual b - A x in w.r (updated recursively, which is
   // the true residual to round-off after a few iterations), so the restriction needs no
   // further product with A.
-  conjugateGradient(A, b, x, settings.smoothingIterations, 0.0, w.r, w.p, w.q);
+  conjugateGradient(A, b, x, settings.smoothingAt(level), 0.0, w.r, w.p, w.q);
   // 2. restriction of the residual
   w.coarseRhs.noalias() = m_PT[level] * w.r;
   // 3. coarse correction from zero
@@ -111,11 +91,21 @@ void MultigridCycle::vCycle(int level, Eigen::VectorXd& x, const Eigen::VectorXd
   // 4. prolongation of the correction, post-smoothing
   x.noalias() += P * w.coarseX;
   if (settings.postSmoothing)
-    conjugateGradient(A, b, x, settings.smoothingIterations, 0.0, w.r, w.p, w.q);
+    conjugateGradient(A, b, x, settings.smoothingAt(level), 0.0, w.r, w.p, w.q);
 }
 
 void MultigridCycle::fullCycle(Eigen::VectorXd& x, const Eigen::VectorXd& b,
                                const CycleSettings& settings) {
+  nestedIteration(x, b, settings, CycleKind::full);
+}
+
+void MultigridCycle::cascadicCycle(Eigen::VectorXd& x, const Eigen::VectorXd& b,
+                                   const CycleSettings& settings) {
+  nestedIteration(x, b, settings, CycleKind::cascadic);
+}
+
+void MultigridCycle::nestedIteration(Eigen::VectorXd& x, const Eigen::VectorXd& b,
+                                     const CycleSettings& settings, CycleKind kind) {
   const int coarsest = levels() - 1;
   m_fullRhs.resize(levels());
   m_fullRhs[0] = b;
@@ -124,38 +114,47 @@ void MultigridCycle::fullCycle(Eigen::VectorXd& x, const Eigen::VectorXd& b,
   solveCoarsest(current, m_fullRhs[coarsest], settings);
   for (int l = coarsest - 1; l >= 0; --l) {
     Eigen::VectorXd finer = *m_P[l] * current;
-    vCycle(l, finer, m_fullRhs[l], settings);
+    if (kind == CycleKind::full) {
+      for (int c = 0; c < settings.cyclesAt(l); ++c) vCycle(l, finer, m_fullRhs[l], settings);
+    } else {
+      Work& w = m_work[l];
+      conjugateGradient(blocks(l), m_fullRhs[l], finer, settings.smoothingAt(l), 0.0, w.r, w.p,
+                        w.q);
+    }
     current.swap(finer);
   }
   x = current;
 }
 
-void MultigridCycle::precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z, bool full,
-                                  const CycleSettings& settings) {
+void MultigridCycle::cycleFromZero(CycleKind kind, const Eigen::VectorXd& r, Eigen::VectorXd& z,
+                                   const CycleSettings& settings) {
   z.setZero(r.size());
-  if (full)
-    fullCycle(z, r, settings);
-  else
-    vCycle(0, z, r, settings);
+  switch (kind) {
+    case CycleKind::V: vCycle(0, z, r, settings); break;
+    case CycleKind::full: fullCycle(z, r, settings); break;
+    case CycleKind::cascadic: cascadicCycle(z, r, settings); break;
+  }
 }
 
-int MultigridCycle::flexibleConjugateGradient(const SparseMatrix& A, const Eigen::VectorXd& b,
+int MultigridCycle::flexibleConjugateGradient(const LinearOperator& A, const Eigen::VectorXd& b,
                                               Eigen::VectorXd& x, int iterations, double tolerance,
-                                              bool full, const CycleSettings& settings,
+                                              CycleKind kind, const CycleSettings& settings,
                                               double& residual) {
   const double normB = b.norm();
-  if ((x.array() == 0).all())
+  if ((x.array() == 0).all()) {
     m_r = b;
-  else
-    m_r.noalias() = b - A * x;
+  } else {
+    A(x, m_q);
+    m_r = b - m_q;
+  }
   residual = normB > 0 ? m_r.norm() / normB : 0;
   if (normB == 0 || residual <= tolerance) return 0;
-  precondition(m_r, m_z, full, settings);
+  cycleFromZero(kind, m_r, m_z, settings);
   m_d = m_z;
   double rz = m_r.dot(m_z);
   int done = 0;
   while (done < iterations) {
-    m_q.noalias() = A * m_d;
+    A(m_d, m_q);
     const double den = m_d.dot(m_q);
     if (!(den > 0) || !(rz > 0)) break;  // converged to round-off, or not positive definite
     const double alpha = rz / den;
@@ -165,14 +164,15 @@ int MultigridCycle::flexibleConjugateGradient(const SparseMatrix& A, const Eigen
     ++done;
     residual = m_r.norm() / normB;
     if (!std::isfinite(residual) || residual <= tolerance || done >= iterations) return done;
-    precondition(m_r, m_z, full, settings);
+    cycleFromZero(kind, m_r, m_z, settings);
     // Polak-Ribiere: beta = z_{k+1} . (r_{k+1} - r_k) / (z_k . r_k).
     const double beta = m_z.dot(m_r - m_previousR) / rz;
     rz = m_r.dot(m_z);
     m_d = m_z + beta * m_d;
   }
   // Stopped early: the residual of the x returned.
-  m_r.noalias() = b - A * x;
+  A(x, m_q);
+  m_r = b - m_q;
   residual = m_r.norm() / normB;
   return done;
 }

@@ -31,6 +31,18 @@ std::string number(double value) {
 }  // namespace
 
 void MultigridLinearSolver::init() {
+  if (d_fineUpdateInterval.value() != 1 && !d_conjugateGradient.value())
+    msgWarning("fineUpdateInterval = " + std::to_string(d_fineUpdateInterval.value()) +
+                   " needs conjugateGradient=\"true\" (stationary cycles take their residuals "
+                   "from the assembled matrix): the system is assembled at every solve",
+               "fineUpdateInterval");
+  for (const Data<std::vector<int>>* perLevel : {&d_levelSmoothing, &d_levelCycles})
+    for (int count : perLevel->value())
+      if (count < 0) {
+        msgError("negative count " + std::to_string(count) + " in " + perLevel->name(),
+                 perLevel->name());
+        break;
+      }
   if (!findTopology(nullptr))
     msgError("no grid found: no topology in " +
                  (node() ? node()->path() : std::string("the node")) +
@@ -111,12 +123,18 @@ LinearSolveReport MultigridLinearSolver::solve(MechanicalOperations& mop,
     return fail(mop, x);
   }
 
-  mop.assemble(mp, m_matrix);
-  ScopedPhase phase(mop.timing(), "linearSolve");
   // Prolongations in the space the constraints allow, remade when the fixed set changes.
   std::vector<char> fixed;
   mop.fixedGlobalRows(fixed);
   const bool patternChanged = fixed != m_fixed || m_P.size() != m_pointP.size();
+  // The fine matrix is assembled every fineUpdateInterval solves; in between the cycles keep
+  // the operators of the last assembly and the outer CG multiplies through the force fields.
+  const int fineInterval = d_conjugateGradient.value() ? d_fineUpdateInterval.value() : 1;
+  const bool assembleNow = patternChanged || fineInterval == 1 || m_solvesSinceAssembly == 0 ||
+                           (fineInterval > 0 && m_solvesSinceAssembly >= fineInterval);
+  if (assembleNow) mop.assemble(mp, m_matrix);
+  m_solvesSinceAssembly = assembleNow ? 1 : m_solvesSinceAssembly + 1;
+  ScopedPhase phase(mop.timing(), "linearSolve");
   if (patternChanged) {
     m_fixed = std::move(fixed);
     m_P.clear();
@@ -125,13 +143,19 @@ LinearSolveReport MultigridLinearSolver::solve(MechanicalOperations& mop,
           multigrid::expandProlongation(m_pointP[l], 3, l == 0 ? m_fixed : std::vector<char>{}));
   }
   const Eigen::SparseMatrix<double>& A = m_matrix.matrix();
-  {
+  if (assembleNow) {
     ScopedPhase setup(mop.timing(), "multigridSetup");
     const int interval = d_coarseUpdateInterval.value();
-    const bool update = patternChanged || m_solvesSinceUpdate == 0 ||
-                        (interval > 0 && m_solvesSinceUpdate >= interval);
-    m_cycle.setOperators(A, m_P, patternChanged, update);
-    m_solvesSinceUpdate = update ? 1 : m_solvesSinceUpdate + 1;
+    const bool update = patternChanged || m_assembliesSinceUpdate == 0 ||
+                        (interval > 0 && m_assembliesSinceUpdate >= interval);
+    multigrid::OperatorUpdate operators;
+    operators.patternChanged = patternChanged;
+    operators.updateCoarse = update;
+    operators.fineSamePattern = m_matrix.patternRevision() == m_fineRevision;
+    operators.precision = d_matrixPrecision.value();
+    m_cycle.setOperators(A, m_P, operators);
+    m_fineRevision = m_matrix.patternRevision();
+    m_assembliesSinceUpdate = update ? 1 : m_assembliesSinceUpdate + 1;
   }
 
   mop.gather(rhs, m_rhs);
@@ -151,11 +175,21 @@ LinearSolveReport MultigridLinearSolver::solve(MechanicalOperations& mop,
   settings.coarseIterations = d_coarseIterations.value();
   settings.directCoarseSolve = d_directCoarseSolve.value();
   settings.postSmoothing = d_postSmoothing.value();
+  settings.levelSmoothing = d_levelSmoothing.value();
+  settings.levelCycles = d_levelCycles.value();
   report.converged = false;
-  if (d_conjugateGradient.value())
-    iterateConjugateGradient(A, settings, report);
-  else
+  if (d_conjugateGradient.value() && fineInterval != 1) {
+    const VecId in = mop.allocDeriv(), out = mop.allocDeriv();
+    iterateConjugateGradient(productThroughForceFields(mop, mp, in, out), settings, report);
+    mop.freeVec(out);
+    mop.freeVec(in);
+  } else if (d_conjugateGradient.value()) {
+    iterateConjugateGradient(
+        [&A](const Eigen::VectorXd& in, Eigen::VectorXd& out) { out.noalias() = A * in; },
+        settings, report);
+  } else {
     iterateCycles(A, normB, warm, settings, report);
+  }
   mop.scatter(m_solution, x);
   this->report(report);
   return report;
@@ -165,9 +199,12 @@ void MultigridLinearSolver::iterateCycles(const Eigen::SparseMatrix<double>& A, 
                                           bool warm, const multigrid::CycleSettings& settings,
                                           LinearSolveReport& report) {
   while (report.iterations < d_iterations.value()) {
-    // A full cycle starts from zero: after a warm start, V-cycles improve the start instead.
+    // Full and cascadic cycles start from zero: after a warm start, and after the first cycle,
+    // V-cycles improve the current solution instead.
     if (report.iterations == 0 && d_cycle.value() == MultigridCycleKind::full && !warm)
       m_cycle.fullCycle(m_solution, m_rhs, settings);
+    else if (report.iterations == 0 && d_cycle.value() == MultigridCycleKind::cascadic && !warm)
+      m_cycle.cascadicCycle(m_solution, m_rhs, settings);
     else
       m_cycle.vCycle(0, m_solution, m_rhs, settings);
     ++report.iterations;
@@ -181,12 +218,25 @@ void MultigridLinearSolver::iterateCycles(const Eigen::SparseMatrix<double>& A, 
   }
 }
 
-void MultigridLinearSolver::iterateConjugateGradient(const Eigen::SparseMatrix<double>& A,
+multigrid::LinearOperator MultigridLinearSolver::productThroughForceFields(
+    MechanicalOperations& mop, const MechanicalParams& mp, VecId inVec, VecId outVec) {
+  // The assembled system's rows: projected (m M + b B + k K) dx, identity at fixed rows.
+  return [this, &mop, mp, inVec, outVec](const Eigen::VectorXd& in, Eigen::VectorXd& out) {
+    mop.scatter(in, inVec);
+    mop.computeMBKdx(mp, outVec, inVec);
+    mop.projectResponse(outVec);
+    mop.gather(outVec, out);
+    for (std::size_t r = 0; r < m_fixed.size(); ++r)
+      if (m_fixed[r]) out[Eigen::Index(r)] = in[Eigen::Index(r)];
+  };
+}
+
+void MultigridLinearSolver::iterateConjugateGradient(const multigrid::LinearOperator& A,
                                                      const multigrid::CycleSettings& settings,
                                                      LinearSolveReport& report) {
   report.iterations = m_cycle.flexibleConjugateGradient(
-      A, m_rhs, m_solution, d_iterations.value(), d_tolerance.value(),
-      d_cycle.value() == MultigridCycleKind::full, settings, report.residual);
+      A, m_rhs, m_solution, d_iterations.value(), d_tolerance.value(), d_cycle.value(), settings,
+      report.residual);
   report.converged = report.residual <= d_tolerance.value();
 }
 

@@ -16,11 +16,16 @@
 
 namespace stroma {
 
-enum class MultigridCycleKind { V, full };
+using MultigridCycleKind = multigrid::CycleKind;
 
 template <>
-struct EnumKeywords<MultigridCycleKind> {
-  static constexpr std::array<std::string_view, 2> names{"V", "full"};
+struct EnumKeywords<multigrid::CycleKind> {
+  static constexpr std::array<std::string_view, 3> names{"V", "full", "cascadic"};
+};
+
+template <>
+struct EnumKeywords<multigrid::SymmetricBlockMatrix::Precision> {
+  static constexpr std::array<std::string_view, 2> names{"double", "single"};
 };
 
 /// Geometric multigrid on nested hexahedral grids (Nesme 2008, seed 001, ch. 5 sec. 3), for
@@ -57,9 +62,12 @@ class MultigridLinearSolver final : public LinearSolver {
                      "Coarse levels below the simulated grid (0: plain CG with "
                      "coarseIterations on the fine level).",
                      {.min = 0.0, .max = 30.0}};
-  Data<MultigridCycleKind> d_cycle{this, "cycle", MultigridCycleKind::V,
-                                   "V (V-cycle from the fine level) or full (full multigrid: "
-                                   "start at the coarsest level)."};
+  Data<MultigridCycleKind> d_cycle{
+      this, "cycle", MultigridCycleKind::V,
+      "V (V-cycle from the fine level), full (full multigrid: the coarsest level solved, then a "
+      "V-cycle on each finer level from the prolongation of the coarser result) or cascadic (the "
+      "same nesting with levelSmoothing CG iterations on each finer level instead of a V-cycle, "
+      "Bornemann and Deuflhard 1996: cheap when the coarse levels are accurate)."};
   Data<int> d_iterations{
       this, "iterations", 1, "Maximum number of cycles per solve.", {.min = 1.0}};
   Data<double> d_tolerance{this,
@@ -74,6 +82,24 @@ class MultigridLinearSolver final : public LinearSolver {
                                   "CG iterations of each smoothing on every level but the "
                                   "coarsest (seed 001 table 5.2: 7).",
                                   {.min = 0.0}};
+  Data<std::vector<int>> d_levelSmoothing{
+      this, "levelSmoothing", {},
+      "Smoothing (cascadic: CG) iterations per level, finest first, the last repeated on coarser "
+      "levels; empty: smoothingIterations everywhere. A coarse level costs 1/8 of the next finer "
+      "one: e.g. \"1 8\" smooths little on the fine level and much on the coarse ones."};
+  Data<std::vector<int>> d_levelCycles{
+      this, "levelCycles", {},
+      "cycle=\"full\": V-cycles on each level after the prolongation of the coarser result, "
+      "finest first, the last repeated; empty: 1 everywhere (classical full multigrid). A 0 "
+      "on the finest level returns the prolongation of the next level's result: enough when "
+      "the coarse discretization is as accurate as the solve needs to be."};
+  Data<multigrid::SymmetricBlockMatrix::Precision> d_matrixPrecision{
+      this, "matrixPrecision", multigrid::SymmetricBlockMatrix::Precision::double_,
+      "Storage of the level matrices the cycles multiply with, as 3 x 3 blocks: double or "
+      "single. The smoothing products are memory bound, and single reads about half the bytes; "
+      "the outer flexible CG (conjugateGradient) and the residuals of stationary cycles use "
+      "the assembled matrix in double, so single precision limits only stationary cycles (to a "
+      "relative residual near 1e-7)."};
   Data<bool> d_postSmoothing{this, "postSmoothing", true,
                              "Smooth again after the coarse correction."};
   Data<int> d_coarseIterations{this,
@@ -96,6 +122,17 @@ class MultigridLinearSolver final : public LinearSolver {
       "operators of an earlier matrix: for a corotational model a slightly stale "
       "preconditioner, which the outer conjugateGradient absorbs; the fine level always uses "
       "the current matrix.",
+      {.min = 0.0}};
+  Data<int> d_fineUpdateInterval{
+      this,
+      "fineUpdateInterval",
+      1,
+      "With conjugateGradient: assemble the system every this many solves (1: every solve; 0: "
+      "only when the fixed set changes). In between, the cycles keep the matrices of the last "
+      "assembly (a stale preconditioner, like coarseUpdateInterval, which counts assemblies) and "
+      "the outer CG multiplies through the force fields and masses (computeMBKdx), so the "
+      "solution is that of the current system; the assembly (the largest cost of a step on a "
+      "fine grid) is then paid once per interval.",
       {.min = 0.0}};
   Data<bool> d_warmStart{this, "warmStart", false,
                          "Start each solve from the previous solve's solution instead of zero "
@@ -125,7 +162,13 @@ class MultigridLinearSolver final : public LinearSolver {
   /// Stationary cycles (x += cycle correction) or flexible CG preconditioned by a cycle.
   void iterateCycles(const Eigen::SparseMatrix<double>& A, double normB, bool warm,
                      const multigrid::CycleSettings& settings, LinearSolveReport& report);
-  void iterateConjugateGradient(const Eigen::SparseMatrix<double>& A,
+  /// The product with the system through the force fields and masses (computeMBKdx), as the
+  /// assembled matrix would give it, with the state vectors `in` and `out` as scratch: for the
+  /// solves that do not assemble.
+  multigrid::LinearOperator productThroughForceFields(MechanicalOperations& mop,
+                                                      const MechanicalParams& mp, VecId in,
+                                                      VecId out);
+  void iterateConjugateGradient(const multigrid::LinearOperator& A,
                                 const multigrid::CycleSettings& settings,
                                 LinearSolveReport& report);
   void report(const LinearSolveReport& r);
@@ -141,7 +184,9 @@ class MultigridLinearSolver final : public LinearSolver {
   bool m_reportedBadInput = false;
   Eigen::VectorXd m_rhs, m_solution, m_residual;
   long long m_unconverged = 0, m_solves = 0;
-  int m_solvesSinceUpdate = 0;  ///< solves since the coarse operators were computed
+  int m_assembliesSinceUpdate = 0;  ///< assemblies since the coarse operators were computed
+  int m_solvesSinceAssembly = 0;    ///< solves since the fine matrix was assembled
+  std::uint64_t m_fineRevision = ~std::uint64_t{0};  ///< m_matrix's pattern at the last setup
 };
 
 }  // namespace stroma

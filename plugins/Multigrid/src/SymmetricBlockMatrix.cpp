@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: MIT
+#include "SymmetricBlockMatrix.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#if defined(__AVX2__) && defined(__FMA__)
+#include <immintrin.h>
+#endif
+
+namespace stroma::multigrid {
+
+namespace {
+/// Values after the last block, so that 4-wide loads of its last column stay in the array.
+constexpr std::size_t kPadding = 3;
+}  // namespace
+
+void SymmetricBlockMatrix::buildPattern(const Eigen::SparseMatrix<double>& A) {
+  if (A.rows() != A.cols() || A.rows() % 3 != 0)
+    throw std::invalid_argument("SymmetricBlockMatrix: the matrix is not square with 3n rows");
+  m_blockColumnCount = std::size_t(A.cols() / 3);
+  m_columnStarts.assign(m_blockColumnCount + 1, 0);
+  m_blockRows.clear();
+  m_destination.resize(std::size_t(A.nonZeros()));
+  const int* outer = A.outerIndexPtr();
+  const int* inner = A.innerIndexPtr();
+  // Per block column: the union of the block rows of its 3 columns, then each entry's place.
+  std::vector<std::uint32_t> rows;
+  for (std::size_t J = 0; J < m_blockColumnCount; ++J) {
+    rows.clear();
+    for (int k = outer[3 * J]; k < outer[3 * J + 3]; ++k) rows.push_back(std::uint32_t(inner[k] / 3));
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    const std::size_t first = m_blockRows.size();
+    m_blockRows.insert(m_blockRows.end(), rows.begin(), rows.end());
+    m_columnStarts[J + 1] = std::uint32_t(m_blockRows.size());
+    for (std::size_t j = 0; j < 3; ++j)
+      for (int k = outer[3 * J + j]; k < outer[3 * J + j + 1]; ++k) {
+        const std::uint32_t I = std::uint32_t(inner[k] / 3);
+        const std::size_t slot =
+            std::size_t(std::lower_bound(rows.begin(), rows.end(), I) - rows.begin());
+        m_destination[std::size_t(k)] =
+            std::uint32_t(9 * (first + slot) + 3 * std::size_t(inner[k] % 3) + j);
+      }
+  }
+}
+
+template <class Scalar>
+void SymmetricBlockMatrix::fill(const Eigen::SparseMatrix<double>& A, std::vector<Scalar>& values) const {
+  values.assign(9 * m_blockRows.size() + kPadding, Scalar(0));
+  const double* source = A.valuePtr();
+  const std::size_t count = m_destination.size();
+  for (std::size_t k = 0; k < count; ++k) values[m_destination[k]] = Scalar(source[k]);
+}
+
+void SymmetricBlockMatrix::assign(const Eigen::SparseMatrix<double>& A, Precision precision,
+                         bool samePattern) {
+  if (!A.isCompressed())
+    throw std::invalid_argument("SymmetricBlockMatrix: the matrix is not in compressed form");
+  if (!samePattern || std::size_t(A.nonZeros()) != m_destination.size() || A.rows() != rows())
+    buildPattern(A);
+  m_precision = precision;
+  if (precision == Precision::single) {
+    fill(A, m_single);
+    m_double.clear();
+  } else {
+    fill(A, m_double);
+    m_single.clear();
+  }
+}
+
+namespace {
+
+#if defined(__AVX2__) && defined(__FMA__)
+/// The 4 values at `p` as doubles (the 4th belongs to the next column or block: ignored).
+inline __m256d load4(const double* p) { return _mm256_loadu_pd(p); }
+inline __m256d load4(const float* p) { return _mm256_cvtps_pd(_mm_loadu_ps(p)); }
+#endif
+
+}  // namespace
+
+template <class Scalar>
+void SymmetricBlockMatrix::multiplyWith(const std::vector<Scalar>& values,
+                                        const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  y.resize(rows());
+  double* out = y.data();
+  const double* in = x.data();
+  const Scalar* block = values.data();
+  for (std::size_t J = 0; J < m_blockColumnCount; ++J) {
+#if defined(__AVX2__) && defined(__FMA__)
+    __m256d sum = _mm256_setzero_pd();
+    for (std::uint32_t k = m_columnStarts[J]; k < m_columnStarts[J + 1]; ++k, block += 9) {
+      const double* xI = in + 3 * std::size_t(m_blockRows[k]);
+      sum = _mm256_fmadd_pd(load4(block), _mm256_broadcast_sd(xI), sum);
+      sum = _mm256_fmadd_pd(load4(block + 3), _mm256_broadcast_sd(xI + 1), sum);
+      sum = _mm256_fmadd_pd(load4(block + 6), _mm256_broadcast_sd(xI + 2), sum);
+    }
+    alignas(32) double lanes[4];
+    _mm256_store_pd(lanes, sum);
+    out[3 * J] = lanes[0];
+    out[3 * J + 1] = lanes[1];
+    out[3 * J + 2] = lanes[2];
+#else
+    double s0 = 0, s1 = 0, s2 = 0;
+    for (std::uint32_t k = m_columnStarts[J]; k < m_columnStarts[J + 1]; ++k, block += 9) {
+      const double* xI = in + 3 * std::size_t(m_blockRows[k]);
+      s0 += double(block[0]) * xI[0] + double(block[3]) * xI[1] + double(block[6]) * xI[2];
+      s1 += double(block[1]) * xI[0] + double(block[4]) * xI[1] + double(block[7]) * xI[2];
+      s2 += double(block[2]) * xI[0] + double(block[5]) * xI[1] + double(block[8]) * xI[2];
+    }
+    out[3 * J] = s0;
+    out[3 * J + 1] = s1;
+    out[3 * J + 2] = s2;
+#endif
+  }
+}
+
+void SymmetricBlockMatrix::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  if (m_precision == Precision::single)
+    multiplyWith(m_single, x, y);
+  else
+    multiplyWith(m_double, x, y);
+}
+
+}  // namespace stroma::multigrid
