@@ -352,6 +352,14 @@ const KernelMethod kKernelMethods[] = {
      true},
     {"FMG4c(0,1)(0,3)-LDL-single", 0, 1, true, false, {1, 150, true, true, {0, 3}, {0, 1}}, false,
      true},
+    {"FMG4c(0,1)(0,3,2)-LDL-single", 0, 1, true, false, {1, 150, true, true, {0, 3, 2}, {0, 1}},
+     false, true},
+    {"FMG4c(0,1)(0,2,4)-LDL-single", 0, 1, true, false, {1, 150, true, true, {0, 2, 4}, {0, 1}},
+     false, true},
+    {"FMG4c(0,1)(0,3)-LDL-nopost-single", 0, 1, true, false, {1, 150, true, false, {0, 3}, {0, 1}},
+     false, true},
+    {"FMG4c(0,1)(0,4)-LDL-nopost-single", 0, 1, true, false, {1, 150, true, false, {0, 4}, {0, 1}},
+     false, true},
     {"FMG4c(0,2)(0,2)-LDL-single", 0, 1, true, false, {1, 150, true, true, {0, 2}, {0, 2}}, false,
      true},
     // Cascadic cycles: CG on each level from the prolongation, no coarse correction going back.
@@ -432,6 +440,23 @@ void kernelTable52Product(benchmark::State& state, int storage) {
     benchmark::DoNotOptimize(y.data());
   }
   state.counters["cpu_ms"] = 1e3 * best;
+  const Eigen::VectorXd exact = k.A * k.b;
+  state.counters["relative_difference"] = (y - exact).norm() / exact.norm();
+  if (storage > 0) {
+    multigrid::MultigridCycle& cycle = storage == 1 ? k.cycle : k.singleCycle;
+    for (int l = 1; l < cycle.levels(); ++l) {
+      const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(cycle.matrix(l).rows(), -1.0, 1.0);
+      const Eigen::VectorXd reference = cycle.matrix(l) * x;
+      Eigen::VectorXd product;
+      multigrid::multiply(cycle.blocks(l), x, product);
+      state.counters["level" + std::to_string(l) + "_difference"] =
+          (product - reference).norm() / reference.norm();
+      const multigrid::SparseMatrix asymmetry =
+          multigrid::SparseMatrix(cycle.matrix(l).transpose()) - cycle.matrix(l);
+      state.counters["level" + std::to_string(l) + "_asymmetry"] =
+          asymmetry.norm() / cycle.matrix(l).norm();
+    }
+  }
   state.counters["MB_read"] =
       1e-6 * double(storage == 0 ? 12 * k.A.nonZeros()
                                  : (storage == 1 ? 76 : 40) * k.cycle.blocks(0).blockCount());
@@ -529,21 +554,40 @@ const Beam049Setting kBeam049Settings[] = {
     {"FCG3-L2direct-s4-stale-single",
      "conjugateGradient=\"true\" iterations=\"3\" levels=\"2\" directCoarseSolve=\"true\" "
      "smoothingIterations=\"4\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\""},
-    {"FCG3-L2direct-s(4,8)-stale-single",
+    // ... and the system assembled every 4th solve, or only at the first (fineUpdateInterval:
+    // the outer CG multiplies through the force field in between).
+    {"FCG3-L2direct-s4-stale-single-fine4",
      "conjugateGradient=\"true\" iterations=\"3\" levels=\"2\" directCoarseSolve=\"true\" "
-     "levelSmoothing=\"4 8\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\""},
-    {"FCG3-L2direct-s(3,8)-stale-single",
+     "smoothingIterations=\"4\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\" "
+     "fineUpdateInterval=\"4\""},
+    {"FCG3-L2direct-s4-stale-single-fine0",
      "conjugateGradient=\"true\" iterations=\"3\" levels=\"2\" directCoarseSolve=\"true\" "
-     "levelSmoothing=\"3 8\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\""},
-    {"FCG2-L2direct-s(4,8)-stale-single",
-     "conjugateGradient=\"true\" iterations=\"2\" levels=\"2\" directCoarseSolve=\"true\" "
-     "levelSmoothing=\"4 8\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\""},
-    {"FCG3-L3direct-s(3,6)-stale-single",
-     "conjugateGradient=\"true\" iterations=\"3\" levels=\"3\" directCoarseSolve=\"true\" "
-     "levelSmoothing=\"3 6\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\""},
-    {"FCG3-L1direct-s3-stale-single",
-     "conjugateGradient=\"true\" iterations=\"3\" levels=\"1\" directCoarseSolve=\"true\" "
-     "smoothingIterations=\"3\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\""},
+     "smoothingIterations=\"4\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\" "
+     "fineUpdateInterval=\"0\""},
+    {"FCG3-L2direct-s(4,8)-stale-single-fine4",
+     "conjugateGradient=\"true\" iterations=\"3\" levels=\"2\" directCoarseSolve=\"true\" "
+     "levelSmoothing=\"4 8\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\" "
+     "fineUpdateInterval=\"4\""},
+    {"FCG4-L2direct-s(4,8)-nopost-stale-single-fine4",
+     "conjugateGradient=\"true\" iterations=\"4\" levels=\"2\" directCoarseSolve=\"true\" "
+     "levelSmoothing=\"4 8\" postSmoothing=\"false\" coarseUpdateInterval=\"0\" "
+     "matrixPrecision=\"single\" fineUpdateInterval=\"4\""},
+    {"FCG5-L2direct-s(3,8)-nopost-stale-single-fine4",
+     "conjugateGradient=\"true\" iterations=\"5\" levels=\"2\" directCoarseSolve=\"true\" "
+     "levelSmoothing=\"3 8\" postSmoothing=\"false\" coarseUpdateInterval=\"0\" "
+     "matrixPrecision=\"single\" fineUpdateInterval=\"4\""},
+    {"FCG3-L2direct-s(3,8)-stale-single-fine4",
+     "conjugateGradient=\"true\" iterations=\"3\" levels=\"2\" directCoarseSolve=\"true\" "
+     "levelSmoothing=\"3 8\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\" "
+     "fineUpdateInterval=\"4\""},
+    {"FCG4-L2direct-s3-stale-single-fine4",
+     "conjugateGradient=\"true\" iterations=\"4\" levels=\"2\" directCoarseSolve=\"true\" "
+     "smoothingIterations=\"3\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\" "
+     "fineUpdateInterval=\"4\""},
+    {"FCG2-L1direct-s4-stale-single-fine4",
+     "conjugateGradient=\"true\" iterations=\"2\" levels=\"1\" directCoarseSolve=\"true\" "
+     "smoothingIterations=\"4\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\" "
+     "fineUpdateInterval=\"4\""},
 };
 
 void beam049(benchmark::State& state, const Beam049Setting& setting) {

@@ -13,6 +13,8 @@ namespace stroma::multigrid {
 namespace {
 /// Values after the last block, so that 4-wide loads of its last column stay in the array.
 constexpr std::size_t kPadding = 3;
+/// The destination of an entry below the diagonal blocks (not stored).
+constexpr std::uint32_t kLower = 0xffffffffu;
 }  // namespace
 
 void SymmetricBlockMatrix::buildPattern(const Eigen::SparseMatrix<double>& A) {
@@ -24,11 +26,14 @@ void SymmetricBlockMatrix::buildPattern(const Eigen::SparseMatrix<double>& A) {
   m_destination.resize(std::size_t(A.nonZeros()));
   const int* outer = A.outerIndexPtr();
   const int* inner = A.innerIndexPtr();
-  // Per block column: the union of the block rows of its 3 columns, then each entry's place.
+  // Per block column: the union of the block rows I <= J of its 3 columns (the upper triangle,
+  // diagonal block last), then each entry's place; entries below the diagonal blocks are not
+  // copied.
   std::vector<std::uint32_t> rows;
   for (std::size_t J = 0; J < m_blockColumnCount; ++J) {
     rows.clear();
-    for (int k = outer[3 * J]; k < outer[3 * J + 3]; ++k) rows.push_back(std::uint32_t(inner[k] / 3));
+    for (int k = outer[3 * J]; k < outer[3 * J + 3]; ++k)
+      if (std::size_t(inner[k] / 3) <= J) rows.push_back(std::uint32_t(inner[k] / 3));
     std::sort(rows.begin(), rows.end());
     rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
     const std::size_t first = m_blockRows.size();
@@ -37,6 +42,10 @@ void SymmetricBlockMatrix::buildPattern(const Eigen::SparseMatrix<double>& A) {
     for (std::size_t j = 0; j < 3; ++j)
       for (int k = outer[3 * J + j]; k < outer[3 * J + j + 1]; ++k) {
         const std::uint32_t I = std::uint32_t(inner[k] / 3);
+        if (I > J) {
+          m_destination[std::size_t(k)] = kLower;
+          continue;
+        }
         const std::size_t slot =
             std::size_t(std::lower_bound(rows.begin(), rows.end(), I) - rows.begin());
         m_destination[std::size_t(k)] =
@@ -50,7 +59,8 @@ void SymmetricBlockMatrix::fill(const Eigen::SparseMatrix<double>& A, std::vecto
   values.assign(9 * m_blockRows.size() + kPadding, Scalar(0));
   const double* source = A.valuePtr();
   const std::size_t count = m_destination.size();
-  for (std::size_t k = 0; k < count; ++k) values[m_destination[k]] = Scalar(source[k]);
+  for (std::size_t k = 0; k < count; ++k)
+    if (m_destination[k] != kLower) values[m_destination[k]] = Scalar(source[k]);
 }
 
 void SymmetricBlockMatrix::assign(const Eigen::SparseMatrix<double>& A, Precision precision,
@@ -86,28 +96,41 @@ void SymmetricBlockMatrix::multiplyWith(const std::vector<Scalar>& values,
   double* out = y.data();
   const double* in = x.data();
   const Scalar* block = values.data();
+  // Column J: y_J = sum over I <= J of B_IJ^T x_I, stored (the blocks of later columns add to it
+  // afterwards), and y_I += B_IJ x_J for I < J (rows already stored).
   for (std::size_t J = 0; J < m_blockColumnCount; ++J) {
+    const double* xJ = in + 3 * J;
+    const double x0 = xJ[0], x1 = xJ[1], x2 = xJ[2];
 #if defined(__AVX2__) && defined(__FMA__)
     __m256d sum = _mm256_setzero_pd();
+#else
+    double s0 = 0, s1 = 0, s2 = 0;
+#endif
     for (std::uint32_t k = m_columnStarts[J]; k < m_columnStarts[J + 1]; ++k, block += 9) {
-      const double* xI = in + 3 * std::size_t(m_blockRows[k]);
+      const std::size_t I = m_blockRows[k];
+      const double* xI = in + 3 * I;
+#if defined(__AVX2__) && defined(__FMA__)
       sum = _mm256_fmadd_pd(load4(block), _mm256_broadcast_sd(xI), sum);
       sum = _mm256_fmadd_pd(load4(block + 3), _mm256_broadcast_sd(xI + 1), sum);
       sum = _mm256_fmadd_pd(load4(block + 6), _mm256_broadcast_sd(xI + 2), sum);
+#else
+      s0 += double(block[0]) * xI[0] + double(block[3]) * xI[1] + double(block[6]) * xI[2];
+      s1 += double(block[1]) * xI[0] + double(block[4]) * xI[1] + double(block[7]) * xI[2];
+      s2 += double(block[2]) * xI[0] + double(block[5]) * xI[1] + double(block[8]) * xI[2];
+#endif
+      if (I == J) continue;  // the diagonal block (last of its column) counts once
+      double* yI = out + 3 * I;
+      yI[0] += double(block[0]) * x0 + double(block[1]) * x1 + double(block[2]) * x2;
+      yI[1] += double(block[3]) * x0 + double(block[4]) * x1 + double(block[5]) * x2;
+      yI[2] += double(block[6]) * x0 + double(block[7]) * x1 + double(block[8]) * x2;
     }
+#if defined(__AVX2__) && defined(__FMA__)
     alignas(32) double lanes[4];
     _mm256_store_pd(lanes, sum);
     out[3 * J] = lanes[0];
     out[3 * J + 1] = lanes[1];
     out[3 * J + 2] = lanes[2];
 #else
-    double s0 = 0, s1 = 0, s2 = 0;
-    for (std::uint32_t k = m_columnStarts[J]; k < m_columnStarts[J + 1]; ++k, block += 9) {
-      const double* xI = in + 3 * std::size_t(m_blockRows[k]);
-      s0 += double(block[0]) * xI[0] + double(block[3]) * xI[1] + double(block[6]) * xI[2];
-      s1 += double(block[1]) * xI[0] + double(block[4]) * xI[1] + double(block[7]) * xI[2];
-      s2 += double(block[2]) * xI[0] + double(block[5]) * xI[1] + double(block[8]) * xI[2];
-    }
     out[3 * J] = s0;
     out[3 * J + 1] = s1;
     out[3 * J + 2] = s2;
