@@ -307,6 +307,132 @@ void assembledRefill(benchmark::State& state) {
 
 BENCHMARK(assembledRefill)->Unit(benchmark::kMillisecond);
 
+// --- Hexahedra of issue 5: force, product and assembly of a 32^3 grid -------------------
+
+/// bench/scenes/MultigridBeam049.scn's beam (32^3 hexahedra, method large, nu = 0.49) with a CG
+/// solver (never run), bent and twisted smoothly so that every element rotates.
+constexpr int kHexahedronBeamElements = 32 * 32 * 32;
+
+struct HexahedronBeam {
+  LoadedScene loaded;
+  BaseForceField* field = nullptr;
+  std::unique_ptr<MechanicalOperations> mop;
+  VecId f, dx, df;
+
+  bool setUp(benchmark::State& state) {
+    const std::string xml = R"(<Node name="root" dt="0.01" gravity="0 -9.81 0">
+  <Node name="Beam">
+    <EulerImplicitSolver rayleighStiffness="0.1" rayleighMass="0.1" />
+    <CGLinearSolver iterations="10" tolerance="1e-8" threshold="1e-20" />
+    <RegularGridTopology name="grid" n="33 33 33" min="0 0 0" max="2 1 1" />
+    <MechanicalObject name="dofs" position="@grid.position" />
+    <UniformMass totalMass="1" />
+    <BoxROI name="clampedEnd" box="-0.001 -1 -1  0.001 2 2" position="@dofs.rest_position" />
+    <FixedProjectiveConstraint indices="@clampedEnd.indices" />
+    <HexahedronFEMForceField name="FEM" method="large" youngModulus="40000" poissonRatio="0.49" />
+  </Node>
+</Node>
+)";
+    if (!load(state, loaded, 1, "<string>", xml)) return false;
+    field = objectAt<BaseForceField>(*loaded.scene, "@/Beam/FEM");
+    if (!field) {
+      fail(state, "no force field at @/Beam/FEM");
+      return false;
+    }
+    Node* solverNode = loaded.scene->root().findChild("Beam");
+    mop = std::make_unique<MechanicalOperations>(*solverNode, loaded.scene->timing());
+    f = mop->allocDeriv();
+    dx = mop->allocDeriv();
+    df = mop->allocDeriv();
+    // Positions: the beam bent down and twisted about its axis (x), 0.3 rad at the free end.
+    Eigen::VectorXd x;
+    mop->gather(VecId::position(), x);
+    for (Eigen::Index i = 0; i + 2 < x.size(); i += 3) {
+      const double s = x[i] / 2, angle = 0.3 * s, y = x[i + 1] - 0.5, z = x[i + 2] - 0.5;
+      x[i + 1] = 0.5 + std::cos(angle) * y - std::sin(angle) * z - 0.2 * s * s;
+      x[i + 2] = 0.5 + std::sin(angle) * y + std::cos(angle) * z;
+    }
+    mop->scatter(x, VecId::position());
+    Eigen::VectorXd values(static_cast<Eigen::Index>(mop->systemSize()));
+    for (Eigen::Index i = 0; i < values.size(); ++i) values[i] = std::sin(0.37 * double(i));
+    mop->scatter(values, dx);
+    field->accumulateForce(MechanicalParams{}, f);  // rotations of the current positions
+    return true;
+  }
+};
+
+void hexahedronAddForce(benchmark::State& state) {
+  HexahedronBeam beam;
+  if (!beam.setUp(state)) return;
+  const MechanicalParams mp;
+  for (auto _ : state) {
+    beam.field->accumulateForce(mp, beam.f);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * kHexahedronBeamElements);
+}
+
+void hexahedronAddDForce(benchmark::State& state) {
+  HexahedronBeam beam;
+  if (!beam.setUp(state)) return;
+  MechanicalParams mp;
+  mp.kFactor = -1e-4;
+  for (auto _ : state) {
+    beam.field->accumulateDForce(mp, beam.df, beam.dx);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * kHexahedronBeamElements);
+}
+
+/// The implicit Euler matrix M - h^2 K of the beam refilled on its pattern (the assemble phase
+/// of MultigridBeam049 without damping terms).
+void hexahedronAssembledRefill(benchmark::State& state) {
+  HexahedronBeam beam;
+  if (!beam.setUp(state)) return;
+  MechanicalParams mp;
+  mp.mFactor = 1;
+  mp.kFactor = -1e-4;
+  AssembledMatrix A;
+  beam.mop->assemble(mp, A);  // builds the pattern
+  const std::uint64_t pattern = A.patternRevision();
+  for (auto _ : state) {
+    beam.mop->assemble(mp, A);
+    benchmark::ClobberMemory();
+  }
+  if (A.patternRevision() != pattern) fail(state, "the pattern changed between refills");
+  state.SetItemsProcessed(state.iterations() * kHexahedronBeamElements);
+}
+
+/// The force field's part of that refill: its K added straight into an AssembledMatrix (one
+/// addBlocks call per element), without the solver's filter of fixed rows.
+void hexahedronAddKToMatrix(benchmark::State& state) {
+  HexahedronBeam beam;
+  if (!beam.setUp(state)) return;
+  MechanicalParams mp;
+  mp.kFactor = -1e-4;
+  StateOffsets offsets;
+  offsets.set(beam.field->states().front(), 0);
+  AssembledMatrix A;
+  const auto assemble = [&] {
+    A.begin(beam.mop->systemSize());
+    beam.field->accumulateKMatrix(mp, A, offsets);
+    A.finish();
+  };
+  assemble();  // builds the pattern
+  const std::uint64_t pattern = A.patternRevision();
+  for (auto _ : state) {
+    assemble();
+    benchmark::ClobberMemory();
+  }
+  if (A.patternRevision() != pattern) fail(state, "the pattern changed between refills");
+  state.SetItemsProcessed(state.iterations() * kHexahedronBeamElements);
+}
+
+BENCHMARK(hexahedronAddForce)->Unit(benchmark::kMillisecond);
+BENCHMARK(hexahedronAddDForce)->Unit(benchmark::kMillisecond);
+BENCHMARK(hexahedronAssembledRefill)->Unit(benchmark::kMillisecond);
+BENCHMARK(hexahedronAddKToMatrix)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 }  // namespace stroma::bench
 

@@ -5,6 +5,11 @@
 
 namespace stroma {
 
+namespace {
+/// Blocks ahead whose matrix slots a refilling addBlock prefetches.
+constexpr std::size_t kPrefetchDistance = 16;
+}  // namespace
+
 void AssembledMatrix::begin(std::size_t n) {
   m_refilling = m_built && m_matrix.rows() == static_cast<Eigen::Index>(n);
   if (!m_refilling) m_items.clear();
@@ -33,6 +38,7 @@ void AssembledMatrix::addBlock(std::size_t row, std::size_t col, const Eigen::Ma
   if (m_refilling) {
     if (m_cursor < m_items.size() && m_items[m_cursor] == item) {
       double* values = m_matrix.valuePtr();
+      prefetchSlots(m_cursor + kPrefetchDistance);
       const int* slots = &m_slots[3 * m_cursor++];
       for (int j = 0; j < 3; ++j) {
         double* column = values + slots[j];
@@ -47,6 +53,49 @@ void AssembledMatrix::addBlock(std::size_t row, std::size_t col, const Eigen::Ma
   m_newItems.push_back(item);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) m_values.push_back(block(i, j));
+}
+
+void AssembledMatrix::addBlocks(std::span<const std::size_t> offsets,
+                                const Eigen::Ref<const Eigen::MatrixXd>& M, double factor) {
+  const std::size_t n = offsets.size();
+  const auto sameAsRecorded = [&] {
+    if (!m_refilling || m_cursor + n * n > m_items.size()) return false;
+    const Item* item = &m_items[m_cursor];
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j, ++item)
+        if (item->row != offsets[i] || item->col != offsets[j] || !item->block) return false;
+    return true;
+  };
+  if (!sameAsRecorded()) {
+    MatrixAccumulator::addBlocks(offsets, M, factor);
+    return;
+  }
+  // The sums of addBlock(offsets[i], offsets[j], factor * block), in the same order.
+  double* values = m_matrix.valuePtr();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j) {
+      prefetchSlots(m_cursor + kPrefetchDistance);
+      const int* slots = &m_slots[3 * m_cursor++];
+      const auto block = M.block<3, 3>(3 * static_cast<Eigen::Index>(i),
+                                       3 * static_cast<Eigen::Index>(j));
+      for (int c = 0; c < 3; ++c) {
+        double* column = values + slots[c];
+        column[0] += factor * block(0, c);
+        column[1] += factor * block(1, c);
+        column[2] += factor * block(2, c);
+      }
+    }
+  }
+}
+
+void AssembledMatrix::prefetchSlots(std::size_t item) const {
+  // The slots of a later block are known: asking for them now makes the cache misses of a
+  // matrix larger than the cache overlap instead of following one another (assembly of 32^3
+  // hexahedra: 61 -> 51 ms per refill).
+  if (item >= m_items.size()) return;
+  const double* values = m_matrix.valuePtr();
+  const int* slots = &m_slots[3 * item];
+  for (int c = 0; c < 3; ++c) __builtin_prefetch(values + slots[c], 1);
 }
 
 void AssembledMatrix::startRecording() {

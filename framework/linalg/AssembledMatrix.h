@@ -3,6 +3,7 @@
 
 #include <Eigen/Sparse>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace stroma {
@@ -18,6 +19,18 @@ class MatrixAccumulator {
   virtual void addBlock(std::size_t row, std::size_t col, const Eigen::Matrix3d& block) {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) add(row + i, col + j, block(i, j));
+  }
+  /// factor * M for a matrix M of n x n 3x3 blocks (an element's, n = offsets.size()), block
+  /// (i, j) at row offsets[i] and column offsets[j]: the calls addBlock(offsets[i],
+  /// offsets[j], factor * block(i, j)) for i, then j, increasing, which is what this default
+  /// does. Virtual so that an accumulator can take an element in one call (AssembledMatrix
+  /// checks its 64 blocks against the recorded sequence at once and adds them in place).
+  virtual void addBlocks(std::span<const std::size_t> offsets,
+                         const Eigen::Ref<const Eigen::MatrixXd>& M, double factor) {
+    const auto n = static_cast<Eigen::Index>(offsets.size());
+    for (Eigen::Index i = 0; i < n; ++i)
+      for (Eigen::Index j = 0; j < n; ++j)
+        addBlock(offsets[i], offsets[j], factor * M.block<3, 3>(3 * i, 3 * j));
   }
 };
 
@@ -35,6 +48,11 @@ class AssembledMatrix final : public MatrixAccumulator {
   void begin(std::size_t n);
   void add(std::size_t row, std::size_t col, double value) override;
   void addBlock(std::size_t row, std::size_t col, const Eigen::Matrix3d& block) override;
+  /// While refilling and the element's blocks are the next ones of the recorded sequence: adds
+  /// them in place, the sums of the default to round-off (factor * value + sum may be one
+  /// fused multiply-add); otherwise the default (block by block).
+  void addBlocks(std::span<const std::size_t> offsets, const Eigen::Ref<const Eigen::MatrixXd>& M,
+                 double factor) override;
   /// Ends the assembly; the matrix is then ready.
   void finish();
 
@@ -48,6 +66,8 @@ class AssembledMatrix final : public MatrixAccumulator {
     std::uint32_t block;  ///< 1 for a 3x3 block at (row, col), 0 for one entry
     bool operator==(const Item&) const = default;
   };
+  /// Prefetches the matrix slots of the recorded item `item` when there is one.
+  void prefetchSlots(std::size_t item) const;
   /// The call departs from the recorded sequence at m_cursor: record from now on.
   void startRecording();
   void buildPattern();

@@ -422,11 +422,9 @@ class CorotationalElements {
 
   void addElementMatrix(MatrixAccumulator& matrix, std::size_t offset, std::size_t e, double factor,
                         const Matrix& K) const {
-    const Indices& nodes = m_elements[e];
-    for (int i = 0; i < N; ++i)
-      for (int j = 0; j < N; ++j)
-        matrix.addBlock(offset + 3 * std::size_t{nodes[i]}, offset + 3 * std::size_t{nodes[j]},
-                        factor * K.template block<3, 3>(3 * i, 3 * j));
+    std::array<std::size_t, N> rows;
+    for (int i = 0; i < N; ++i) rows[i] = offset + 3 * std::size_t{m_elements[e][i]};
+    matrix.addBlocks(rows, K, factor);
   }
 
   std::vector<Indices> m_elements;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <array>
 #include <random>
 #include <vector>
 
@@ -136,6 +137,84 @@ TEST(AssembledMatrix, ChangedSequencesGiveTheFreshMatrix) {
   assemble(A, 9, small);
   EXPECT_EQ(A.matrix().rows(), 9);
   EXPECT_LT(difference(A, dense(9, small)), 1e-13);
+}
+
+/// Forwards entries and blocks to an AssembledMatrix, element matrices through the default
+/// addBlocks (block by block), as a filtering accumulator does.
+class BlockByBlock final : public MatrixAccumulator {
+ public:
+  explicit BlockByBlock(AssembledMatrix& target) : m_target(target) {}
+  void add(std::size_t row, std::size_t col, double value) override {
+    m_target.add(row, col, value);
+  }
+  void addBlock(std::size_t row, std::size_t col, const Eigen::Matrix3d& block) override {
+    m_target.addBlock(row, col, block);
+  }
+
+ private:
+  AssembledMatrix& m_target;
+};
+
+/// One element matrix per entry of `nodes`: 4 nodes, 12 x 12 values.
+struct Elements {
+  std::vector<std::array<std::size_t, 4>> offsets;
+  std::vector<Eigen::Matrix<double, 12, 12>> matrices;
+};
+
+Elements randomElements(std::mt19937& random, std::size_t nodes, int count) {
+  std::uniform_int_distribution<std::size_t> node(0, nodes - 1);
+  Elements elements;
+  for (int e = 0; e < count; ++e) {
+    elements.offsets.push_back({3 * node(random), 3 * node(random), 3 * node(random),
+                                3 * node(random)});
+    elements.matrices.push_back(Eigen::Matrix<double, 12, 12>::Random());
+  }
+  return elements;
+}
+
+/// Assembles factor * each element, in one call each (A) or block by block (through).
+void assembleElements(AssembledMatrix& A, MatrixAccumulator& through, std::size_t n,
+                      const Elements& elements, double factor) {
+  A.begin(n);
+  for (std::size_t e = 0; e < elements.offsets.size(); ++e)
+    through.addBlocks(elements.offsets[e], elements.matrices[e], factor);
+  A.add(0, 1, 0.5);  // an entry after them
+  A.finish();
+}
+
+TEST(AssembledMatrix, ElementMatricesInOneCallGiveTheSumsOfTheirBlocks) {
+  std::mt19937 random(5);
+  const std::size_t nodes = 12, n = 3 * nodes;
+  const Elements elements = randomElements(random, nodes, 30);
+  AssembledMatrix reference, A;
+  BlockByBlock blocks(reference);
+  assembleElements(reference, blocks, n, elements, -0.7);
+  assembleElements(A, A, n, elements, -0.7);  // records: the default
+  const Eigen::MatrixXd expected(reference.matrix());
+  EXPECT_EQ(Eigen::MatrixXd(A.matrix()), expected);
+
+  // Refilled in place, element by element, then block by block: the same sums (to round-off:
+  // the compiler may fuse factor * value + sum into one multiply-add).
+  const auto revision = A.patternRevision();
+  assembleElements(A, A, n, elements, -0.7);
+  EXPECT_EQ(A.patternRevision(), revision);
+  EXPECT_LT((Eigen::MatrixXd(A.matrix()) - expected).cwiseAbs().maxCoeff(), 1e-14);
+  BlockByBlock throughBlocks(A);
+  assembleElements(A, throughBlocks, n, elements, -0.7);
+  EXPECT_EQ(A.patternRevision(), revision);
+  EXPECT_EQ(Eigen::MatrixXd(A.matrix()), expected);
+
+  // An element whose node changed, in the middle: recorded anew, the fresh matrix.
+  Elements other = elements;
+  other.offsets[17][2] = 3 * ((other.offsets[17][2] / 3 + 1) % nodes);
+  AssembledMatrix fresh;
+  BlockByBlock freshBlocks(fresh);
+  assembleElements(fresh, freshBlocks, n, other, 2.0);
+  assembleElements(A, A, n, other, 2.0);
+  EXPECT_NE(A.patternRevision(), revision);
+  EXPECT_LT((Eigen::MatrixXd(A.matrix()) - Eigen::MatrixXd(fresh.matrix())).cwiseAbs().maxCoeff(),
+            1e-13);
+  EXPECT_EQ(A.matrix().nonZeros(), fresh.matrix().nonZeros());
 }
 
 TEST(AssembledMatrix, AnEmptyAssemblyKeepsItsPattern) {
