@@ -220,16 +220,20 @@ std::string tetrahedronBeamXml(const std::string& method) {
 
 constexpr int kTetrahedronBeamElements = 20 * 6 * 6 * 6;
 
-/// The force field of the bent beam, reached as a solver reaches it, with its work vectors.
-struct TetrahedronBeam {
+/// A force field of a loaded scene (at @/Beam/FEM), reached as a solver reaches it, with its
+/// work vectors.
+struct FieldUnderTest {
   LoadedScene loaded;
   BaseForceField* field = nullptr;
   std::unique_ptr<MechanicalOperations> mop;
   VecId f, dx, df;
 
-  bool setUp(benchmark::State& state, const std::string& method) {
-    if (!load(state, loaded, 1, "<string>", tetrahedronBeamXml(method))) return false;
-    for (int i = 0; i < 20; ++i) loaded.scene->step();
+  /// Loads `xml`, runs `steps` steps, then moves the positions by `deform` when given, sets dx
+  /// and computes the forces once (the rotations of the current positions).
+  bool setUp(benchmark::State& state, const std::string& xml, int steps,
+             void (*deform)(Eigen::VectorXd& positions) = nullptr) {
+    if (!load(state, loaded, 1, "<string>", xml)) return false;
+    for (int i = 0; i < steps; ++i) loaded.scene->step();
     field = objectAt<BaseForceField>(*loaded.scene, "@/Beam/FEM");
     if (!field) {
       fail(state, "no force field at @/Beam/FEM");
@@ -241,6 +245,12 @@ struct TetrahedronBeam {
     f = mop->allocDeriv();
     dx = mop->allocDeriv();
     df = mop->allocDeriv();
+    if (deform) {
+      Eigen::VectorXd x;
+      mop->gather(VecId::position(), x);
+      deform(x);
+      mop->scatter(x, VecId::position());
+    }
     // dx: a smooth field of unit size (as a CG direction), df: cleared by the loop.
     Eigen::VectorXd values(static_cast<Eigen::Index>(mop->systemSize()));
     for (Eigen::Index i = 0; i < values.size(); ++i) values[i] = std::sin(0.37 * double(i));
@@ -250,46 +260,34 @@ struct TetrahedronBeam {
   }
 };
 
-void tetrahedronAddForce(benchmark::State& state, const std::string& method) {
-  TetrahedronBeam beam;
-  if (!beam.setUp(state, method)) return;
+void timeAddForce(benchmark::State& state, FieldUnderTest& beam, int elements) {
   const MechanicalParams mp;
   for (auto _ : state) {
     beam.field->accumulateForce(mp, beam.f);
     benchmark::ClobberMemory();
   }
-  state.SetItemsProcessed(state.iterations() * kTetrahedronBeamElements);
-  state.counters["elements"] = kTetrahedronBeamElements;
+  state.SetItemsProcessed(state.iterations() * elements);
+  state.counters["elements"] = elements;
 }
 
-void tetrahedronAddDForce(benchmark::State& state, const std::string& method) {
-  TetrahedronBeam beam;
-  if (!beam.setUp(state, method)) return;
+void timeAddDForce(benchmark::State& state, FieldUnderTest& beam, int elements) {
   MechanicalParams mp;
   mp.kFactor = -1e-4;
   for (auto _ : state) {
     beam.field->accumulateDForce(mp, beam.df, beam.dx);
     benchmark::ClobberMemory();
   }
-  state.SetItemsProcessed(state.iterations() * kTetrahedronBeamElements);
-  state.counters["elements"] = kTetrahedronBeamElements;
+  state.SetItemsProcessed(state.iterations() * elements);
+  state.counters["elements"] = elements;
 }
 
-BENCHMARK_CAPTURE(tetrahedronAddForce, large, std::string("large"))->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(tetrahedronAddForce, polar, std::string("polar"))->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(tetrahedronAddDForce, large, std::string("large"))->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(tetrahedronAddDForce, polar, std::string("polar"))->Unit(benchmark::kMicrosecond);
-
-// --- 3: assembled matrix refill ----------------------------------------------------------
-
-/// A = M - h^2 K (EulerImplicitSolver's matrix, without damping) of the bent beam, assembled
-/// again on the pattern of the first assembly: the refill of an assembled solver each step.
-void assembledRefill(benchmark::State& state) {
-  TetrahedronBeam beam;
-  if (!beam.setUp(state, "large")) return;
+/// A = M + kFactor K (EulerImplicitSolver's matrix, without damping), assembled again on the
+/// pattern of the first assembly: the refill of an assembled solver each step.
+void timeAssembledRefill(benchmark::State& state, FieldUnderTest& beam, double kFactor,
+                         int elements) {
   MechanicalParams mp;
   mp.mFactor = 1;
-  mp.kFactor = -4e-4;
+  mp.kFactor = kFactor;
   AssembledMatrix A;
   beam.mop->assemble(mp, A);  // builds the pattern
   const std::uint64_t pattern = A.patternRevision();
@@ -302,7 +300,33 @@ void assembledRefill(benchmark::State& state) {
   state.counters["nonzeros"] = nonzeros;
   state.counters["nonzeros/s"] = benchmark::Counter(
       nonzeros * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
-  state.counters["elements"] = kTetrahedronBeamElements;
+  state.counters["elements"] = elements;
+}
+
+void tetrahedronAddForce(benchmark::State& state, const std::string& method) {
+  FieldUnderTest beam;
+  if (beam.setUp(state, tetrahedronBeamXml(method), 20))
+    timeAddForce(state, beam, kTetrahedronBeamElements);
+}
+
+void tetrahedronAddDForce(benchmark::State& state, const std::string& method) {
+  FieldUnderTest beam;
+  if (beam.setUp(state, tetrahedronBeamXml(method), 20))
+    timeAddDForce(state, beam, kTetrahedronBeamElements);
+}
+
+BENCHMARK_CAPTURE(tetrahedronAddForce, large, std::string("large"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(tetrahedronAddForce, polar, std::string("polar"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(tetrahedronAddDForce, large, std::string("large"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(tetrahedronAddDForce, polar, std::string("polar"))->Unit(benchmark::kMicrosecond);
+
+// --- 3: assembled matrix refill ----------------------------------------------------------
+
+/// The bent tetrahedron beam's A = M - h^2 K.
+void assembledRefill(benchmark::State& state) {
+  FieldUnderTest beam;
+  if (beam.setUp(state, tetrahedronBeamXml("large"), 20))
+    timeAssembledRefill(state, beam, -4e-4, kTetrahedronBeamElements);
 }
 
 BENCHMARK(assembledRefill)->Unit(benchmark::kMillisecond);
@@ -310,17 +334,9 @@ BENCHMARK(assembledRefill)->Unit(benchmark::kMillisecond);
 // --- Hexahedra of issue 5: force, product and assembly of a 32^3 grid -------------------
 
 /// bench/scenes/MultigridBeam049.scn's beam (32^3 hexahedra, method large, nu = 0.49) with a CG
-/// solver (never run), bent and twisted smoothly so that every element rotates.
-constexpr int kHexahedronBeamElements = 32 * 32 * 32;
-
-struct HexahedronBeam {
-  LoadedScene loaded;
-  BaseForceField* field = nullptr;
-  std::unique_ptr<MechanicalOperations> mop;
-  VecId f, dx, df;
-
-  bool setUp(benchmark::State& state) {
-    const std::string xml = R"(<Node name="root" dt="0.01" gravity="0 -9.81 0">
+/// solver (never run), bent and twisted smoothly (hexahedronBeamTwist) so that every element
+/// rotates.
+const char* const kHexahedronBeamXml = R"(<Node name="root" dt="0.01" gravity="0 -9.81 0">
   <Node name="Beam">
     <EulerImplicitSolver rayleighStiffness="0.1" rayleighMass="0.1" />
     <CGLinearSolver iterations="10" tolerance="1e-8" threshold="1e-20" />
@@ -333,81 +349,41 @@ struct HexahedronBeam {
   </Node>
 </Node>
 )";
-    if (!load(state, loaded, 1, "<string>", xml)) return false;
-    field = objectAt<BaseForceField>(*loaded.scene, "@/Beam/FEM");
-    if (!field) {
-      fail(state, "no force field at @/Beam/FEM");
-      return false;
-    }
-    Node* solverNode = loaded.scene->root().findChild("Beam");
-    mop = std::make_unique<MechanicalOperations>(*solverNode, loaded.scene->timing());
-    f = mop->allocDeriv();
-    dx = mop->allocDeriv();
-    df = mop->allocDeriv();
-    // Positions: the beam bent down and twisted about its axis (x), 0.3 rad at the free end.
-    Eigen::VectorXd x;
-    mop->gather(VecId::position(), x);
-    for (Eigen::Index i = 0; i + 2 < x.size(); i += 3) {
-      const double s = x[i] / 2, angle = 0.3 * s, y = x[i + 1] - 0.5, z = x[i + 2] - 0.5;
-      x[i + 1] = 0.5 + std::cos(angle) * y - std::sin(angle) * z - 0.2 * s * s;
-      x[i + 2] = 0.5 + std::sin(angle) * y + std::cos(angle) * z;
-    }
-    mop->scatter(x, VecId::position());
-    Eigen::VectorXd values(static_cast<Eigen::Index>(mop->systemSize()));
-    for (Eigen::Index i = 0; i < values.size(); ++i) values[i] = std::sin(0.37 * double(i));
-    mop->scatter(values, dx);
-    field->accumulateForce(MechanicalParams{}, f);  // rotations of the current positions
-    return true;
+constexpr int kHexahedronBeamElements = 32 * 32 * 32;
+
+/// The beam bent down and twisted about its axis (x), 0.3 rad at the free end.
+void hexahedronBeamTwist(Eigen::VectorXd& x) {
+  for (Eigen::Index i = 0; i + 2 < x.size(); i += 3) {
+    const double s = x[i] / 2, angle = 0.3 * s, y = x[i + 1] - 0.5, z = x[i + 2] - 0.5;
+    x[i + 1] = 0.5 + std::cos(angle) * y - std::sin(angle) * z - 0.2 * s * s;
+    x[i + 2] = 0.5 + std::sin(angle) * y + std::cos(angle) * z;
   }
-};
+}
 
 void hexahedronAddForce(benchmark::State& state) {
-  HexahedronBeam beam;
-  if (!beam.setUp(state)) return;
-  const MechanicalParams mp;
-  for (auto _ : state) {
-    beam.field->accumulateForce(mp, beam.f);
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations() * kHexahedronBeamElements);
+  FieldUnderTest beam;
+  if (beam.setUp(state, kHexahedronBeamXml, 0, hexahedronBeamTwist))
+    timeAddForce(state, beam, kHexahedronBeamElements);
 }
 
 void hexahedronAddDForce(benchmark::State& state) {
-  HexahedronBeam beam;
-  if (!beam.setUp(state)) return;
-  MechanicalParams mp;
-  mp.kFactor = -1e-4;
-  for (auto _ : state) {
-    beam.field->accumulateDForce(mp, beam.df, beam.dx);
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations() * kHexahedronBeamElements);
+  FieldUnderTest beam;
+  if (beam.setUp(state, kHexahedronBeamXml, 0, hexahedronBeamTwist))
+    timeAddDForce(state, beam, kHexahedronBeamElements);
 }
 
-/// The implicit Euler matrix M - h^2 K of the beam refilled on its pattern (the assemble phase
-/// of MultigridBeam049 without damping terms).
+/// M - h^2 K of the beam through the solver's assembly (its filter of fixed rows included).
 void hexahedronAssembledRefill(benchmark::State& state) {
-  HexahedronBeam beam;
-  if (!beam.setUp(state)) return;
-  MechanicalParams mp;
-  mp.mFactor = 1;
-  mp.kFactor = -1e-4;
-  AssembledMatrix A;
-  beam.mop->assemble(mp, A);  // builds the pattern
-  const std::uint64_t pattern = A.patternRevision();
-  for (auto _ : state) {
-    beam.mop->assemble(mp, A);
-    benchmark::ClobberMemory();
-  }
-  if (A.patternRevision() != pattern) fail(state, "the pattern changed between refills");
-  state.SetItemsProcessed(state.iterations() * kHexahedronBeamElements);
+  FieldUnderTest beam;
+  if (beam.setUp(state, kHexahedronBeamXml, 0, hexahedronBeamTwist))
+    timeAssembledRefill(state, beam, -1e-4, kHexahedronBeamElements);
 }
 
 /// The force field's part of that refill: its K added straight into an AssembledMatrix (one
 /// addBlocks call per element), without the solver's filter of fixed rows.
 void hexahedronAddKToMatrix(benchmark::State& state) {
-  HexahedronBeam beam;
-  if (!beam.setUp(state)) return;
+  FieldUnderTest beam;
+  if (!beam.setUp(state, kHexahedronBeamXml, 0, hexahedronBeamTwist)) return;
   MechanicalParams mp;
   mp.kFactor = -1e-4;
   StateOffsets offsets;
