@@ -14,8 +14,9 @@ void MultigridCycle::setOperators(const SparseMatrix& A0, const std::vector<Spar
   m_blocks.resize(P.size() + 1);
   m_work.resize(P.size() + 1);
   bool updateCoarse = update.updateCoarse;
+  const bool patternChanged = update.patternChanged || m_PT.size() != P.size();
   // P^T once per pattern (the Galerkin products and the restrictions use it).
-  if (update.patternChanged || m_PT.size() != P.size()) {
+  if (patternChanged) {
     m_PT.resize(P.size());
     for (std::size_t l = 0; l < P.size(); ++l) m_PT[l] = P[l].transpose();
     m_directAnalyzed = false;
@@ -30,12 +31,14 @@ void MultigridCycle::setOperators(const SparseMatrix& A0, const std::vector<Spar
     return;
   }
   m_directFactorized = false;
-  // Galerkin operators, finest to coarsest.
+  // Galerkin operators, finest to coarsest. Their patterns follow from those of A0 and P alone
+  // (Eigen's sparse product keeps structural zeros): unchanged when both are.
+  const bool sameCoarsePatterns = !patternChanged && update.fineSamePattern && !precisionChanged;
   for (std::size_t l = 0; l < P.size(); ++l) {
     const SparseMatrix& fine = l == 0 ? A0 : m_coarse[l - 1];
     m_AP = fine * P[l];
     m_coarse[l] = m_PT[l] * m_AP;
-    m_blocks[l + 1].assign(m_coarse[l], update.precision, false);
+    m_blocks[l + 1].assign(m_coarse[l], update.precision, sameCoarsePatterns);
   }
 }
 

@@ -370,6 +370,33 @@ TEST(MultigridLinearSolver, RefusesNegativeLevels) {
   EXPECT_TRUE(named) << s.log();
 }
 
+// Per-level counts must not be negative; assembling every N solves needs the outer CG (the
+// stationary cycles take their residuals from the assembled matrix): a warning, then the
+// system is assembled at every solve and the solve is right.
+TEST(MultigridLinearSolver, ReportsBadPerLevelCountsAndAnIntervalWithoutConjugateGradient) {
+  {
+    LoadedScene s(cantileverScene(
+        Vec3i(4, 2, 2), 2.0, 40000, 0.3,
+        "<StaticSolver/><MultigridLinearSolver levels=\"1\" levelSmoothing=\"2 -1\"/>"));
+    EXPECT_FALSE(s.loaded);
+    bool named = false;
+    for (const Message& m : s.scene->log().messages())
+      named |= m.level == MessageLevel::error && m.field == "levelSmoothing";
+    EXPECT_TRUE(named) << s.log();
+  }
+  LoadedScene s(cantileverScene(Vec3i(4, 2, 2), 2.0, 40000, 0.3,
+                                "<StaticSolver/><MultigridLinearSolver name=\"mg\" "
+                                "levels=\"1\" fineUpdateInterval=\"3\" iterations=\"50\" "
+                                "tolerance=\"1e-10\"/>"));
+  ASSERT_TRUE(s.loaded) << s.log();
+  bool warned = false;
+  for (const Message& m : s.scene->log().messages())
+    warned |= m.level == MessageLevel::warning && m.field == "fineUpdateInterval";
+  EXPECT_TRUE(warned) << s.log();
+  EXPECT_TRUE(s.scene->step()) << s.log();
+  EXPECT_LE(std::stod(s.body().findObject("mg")->findData("lastResidual")->valueText()), 1e-10);
+}
+
 TEST(MultigridLinearSolver, ReportsAStateThatDoesNotMatchTheGrid) {
   // The solver is linked to a grid of 3 x 3 x 3 points; the beam has 5 x 3 x 3.
   std::string xml = cantileverScene(
