@@ -45,13 +45,25 @@ NodalVectors<N> computeCorotatedDisplacement(const NodalVectors<N>& rest, const 
   return R.transpose() * (x.colwise() - x0) - (rest.colwise() - X0);
 }
 
+/// Ke v, the element matrix times a node-major vector: a sum of Ke's columns, written out so
+/// that the compiler keeps the 3N sums in registers (for 24 x 24 Eigen calls its general
+/// matrix-vector product: the product df = -R Ke R^T dx over 32^3 hexahedra sharing one Ke
+/// took 2.55 ms of CPU against 2.25 ms this way, bench hexahedronAddDForce).
+template <int N>
+ElementVector<N> multiplyStiffness(const ElementMatrix<N>& Ke, const NodalVectors<N>& v) {
+  const auto vector = asElementVector<N>(v);
+  ElementVector<N> result = Ke.col(0) * vector[0];
+  for (int k = 1; k < 3 * N; ++k) result.noalias() += Ke.col(k) * vector[k];
+  return result;
+}
+
 /// Elastic force f = -R Ke (R^T x - X) (N), column i = force on node i.
 template <int N>
 NodalVectors<N> computeForce(const ElementMatrix<N>& Ke, const NodalVectors<N>& rest,
                              const Eigen::Matrix3d& R, const NodalVectors<N>& x) {
   const NodalVectors<N> u = computeCorotatedDisplacement<N>(rest, R, x);
   NodalVectors<N> stiffnessTimesU;
-  Eigen::Map<ElementVector<N>>(stiffnessTimesU.data()).noalias() = Ke * asElementVector<N>(u);
+  Eigen::Map<ElementVector<N>>(stiffnessTimesU.data()) = multiplyStiffness<N>(Ke, u);
   return -R * stiffnessTimesU;
 }
 
@@ -62,7 +74,7 @@ NodalVectors<N> computeDForce(const ElementMatrix<N>& Ke, const Eigen::Matrix3d&
                               const NodalVectors<N>& dx) {
   const NodalVectors<N> localDx = R.transpose() * dx;
   NodalVectors<N> localDf;
-  Eigen::Map<ElementVector<N>>(localDf.data()).noalias() = Ke * asElementVector<N>(localDx);
+  Eigen::Map<ElementVector<N>>(localDf.data()) = multiplyStiffness<N>(Ke, localDx);
   return -R * localDf;
 }
 
