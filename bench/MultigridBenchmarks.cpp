@@ -593,6 +593,14 @@ const Beam049Setting kBeam049Settings[] = {
      "conjugateGradient=\"true\" iterations=\"4\" levels=\"2\" directCoarseSolve=\"true\" "
      "smoothingIterations=\"3\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\" "
      "fineUpdateInterval=\"4\""},
+    {"FCG4-L2direct-s3-stale-single-fine8",
+     "conjugateGradient=\"true\" iterations=\"4\" levels=\"2\" directCoarseSolve=\"true\" "
+     "smoothingIterations=\"3\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\" "
+     "fineUpdateInterval=\"8\""},
+    {"FCG4-L2direct-s(3,2)-stale-single-fine8",
+     "conjugateGradient=\"true\" iterations=\"4\" levels=\"2\" directCoarseSolve=\"true\" "
+     "levelSmoothing=\"3 2\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\" "
+     "fineUpdateInterval=\"8\""},
     {"FCG2-L1direct-s4-stale-single-fine4",
      "conjugateGradient=\"true\" iterations=\"2\" levels=\"1\" directCoarseSolve=\"true\" "
      "smoothingIterations=\"4\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\" "

@@ -226,6 +226,17 @@ class ProjectedAccumulator final : public MatrixAccumulator {
     else
       m_target.addBlock(row, col, block);
   }
+  // An element whose nodes are all free goes through in one call (AssembledMatrix adds its
+  // blocks in place at once); otherwise block by block, dropping the fixed entries.
+  void addBlocks(std::span<const std::size_t> offsets, const Eigen::Ref<const Eigen::MatrixXd>& M,
+                 double factor) override {
+    for (std::size_t offset : offsets)
+      if (m_fixed[offset] | m_fixed[offset + 1] | m_fixed[offset + 2]) {
+        MatrixAccumulator::addBlocks(offsets, M, factor);
+        return;
+      }
+    m_target.addBlocks(offsets, M, factor);
+  }
 
  private:
   MatrixAccumulator& m_target;
