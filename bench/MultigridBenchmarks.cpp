@@ -588,11 +588,11 @@ const Beam049Setting kBeam049Settings[] = {
      "conjugateGradient=\"true\" iterations=\"3\" levels=\"2\" directCoarseSolve=\"true\" "
      "levelSmoothing=\"3 8\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\" "
      "fineUpdateInterval=\"4\""},
-    // bench/scenes/MultigridBeam049.scn (third pass):
     {"FCG4-L2direct-s3-stale-single-fine4",
      "conjugateGradient=\"true\" iterations=\"4\" levels=\"2\" directCoarseSolve=\"true\" "
      "smoothingIterations=\"3\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\" "
      "fineUpdateInterval=\"4\""},
+    // bench/scenes/MultigridBeam049.scn (third pass):
     {"FCG4-L2direct-s3-stale-single-fine8",
      "conjugateGradient=\"true\" iterations=\"4\" levels=\"2\" directCoarseSolve=\"true\" "
      "smoothingIterations=\"3\" coarseUpdateInterval=\"0\" matrixPrecision=\"single\" "

@@ -97,40 +97,57 @@ void SymmetricBlockMatrix::multiplyWith(const std::vector<Scalar>& values,
   const double* in = x.data();
   const Scalar* block = values.data();
   // Column J: y_J = sum over I <= J of B_IJ^T x_I, stored (the blocks of later columns add to it
-  // afterwards), and y_I += B_IJ x_J for I < J (rows already stored).
+  // afterwards), and y_I += B_IJ x_J for I < J (rows already stored). S = B_IJ^T is stored
+  // column-major: y_J gathers S x_I, y_I receives S^T x_J.
   for (std::size_t J = 0; J < m_blockColumnCount; ++J) {
     const double* xJ = in + 3 * J;
-    const double x0 = xJ[0], x1 = xJ[1], x2 = xJ[2];
 #if defined(__AVX2__) && defined(__FMA__)
-    __m256d sum = _mm256_setzero_pd();
-#else
-    double s0 = 0, s1 = 0, s2 = 0;
-#endif
+    const __m256d xJ0 = _mm256_broadcast_sd(xJ), xJ1 = _mm256_broadcast_sd(xJ + 1),
+                  xJ2 = _mm256_broadcast_sd(xJ + 2), zero = _mm256_setzero_pd();
+    __m256d sum = zero;
     for (std::uint32_t k = m_columnStarts[J]; k < m_columnStarts[J + 1]; ++k, block += 9) {
       const std::size_t I = m_blockRows[k];
       const double* xI = in + 3 * I;
-#if defined(__AVX2__) && defined(__FMA__)
-      sum = _mm256_fmadd_pd(load4(block), _mm256_broadcast_sd(xI), sum);
-      sum = _mm256_fmadd_pd(load4(block + 3), _mm256_broadcast_sd(xI + 1), sum);
-      sum = _mm256_fmadd_pd(load4(block + 6), _mm256_broadcast_sd(xI + 2), sum);
-#else
-      s0 += double(block[0]) * xI[0] + double(block[3]) * xI[1] + double(block[6]) * xI[2];
-      s1 += double(block[1]) * xI[0] + double(block[4]) * xI[1] + double(block[7]) * xI[2];
-      s2 += double(block[2]) * xI[0] + double(block[5]) * xI[1] + double(block[8]) * xI[2];
-#endif
+      // S's columns (lane 3: the next value, unused).
+      const __m256d c0 = load4(block), c1 = load4(block + 3), c2 = load4(block + 6);
+      sum = _mm256_fmadd_pd(c0, _mm256_broadcast_sd(xI), sum);
+      sum = _mm256_fmadd_pd(c1, _mm256_broadcast_sd(xI + 1), sum);
+      sum = _mm256_fmadd_pd(c2, _mm256_broadcast_sd(xI + 2), sum);
       if (I == J) continue;  // the diagonal block (last of its column) counts once
+      // S^T x_J = sum_r x_J[r] (row r of S): the rows by a 3 x 3 transpose in registers.
+      const __m256d t0 = _mm256_unpacklo_pd(c0, c1), t1 = _mm256_unpackhi_pd(c0, c1),
+                    t2 = _mm256_unpacklo_pd(c2, zero), t3 = _mm256_unpackhi_pd(c2, zero);
+      const __m256d r0 = _mm256_permute2f128_pd(t0, t2, 0x20),
+                    r1 = _mm256_permute2f128_pd(t1, t3, 0x20),
+                    r2 = _mm256_permute2f128_pd(t0, t2, 0x31);
+      const __m256d v =
+          _mm256_fmadd_pd(r2, xJ2, _mm256_fmadd_pd(r1, xJ1, _mm256_mul_pd(r0, xJ0)));
+      // Exactly y_I's 3 values: a 4-wide store would overlap y_{I+1}, often the next block's
+      // row, and stall the load that follows.
       double* yI = out + 3 * I;
-      yI[0] += double(block[0]) * x0 + double(block[1]) * x1 + double(block[2]) * x2;
-      yI[1] += double(block[3]) * x0 + double(block[4]) * x1 + double(block[5]) * x2;
-      yI[2] += double(block[6]) * x0 + double(block[7]) * x1 + double(block[8]) * x2;
+      _mm_storeu_pd(yI, _mm_add_pd(_mm_loadu_pd(yI), _mm256_castpd256_pd128(v)));
+      yI[2] += _mm_cvtsd_f64(_mm256_extractf128_pd(v, 1));
     }
-#if defined(__AVX2__) && defined(__FMA__)
     alignas(32) double lanes[4];
     _mm256_store_pd(lanes, sum);
     out[3 * J] = lanes[0];
     out[3 * J + 1] = lanes[1];
     out[3 * J + 2] = lanes[2];
 #else
+    const double x0 = xJ[0], x1 = xJ[1], x2 = xJ[2];
+    double s0 = 0, s1 = 0, s2 = 0;
+    for (std::uint32_t k = m_columnStarts[J]; k < m_columnStarts[J + 1]; ++k, block += 9) {
+      const std::size_t I = m_blockRows[k];
+      const double* xI = in + 3 * I;
+      s0 += double(block[0]) * xI[0] + double(block[3]) * xI[1] + double(block[6]) * xI[2];
+      s1 += double(block[1]) * xI[0] + double(block[4]) * xI[1] + double(block[7]) * xI[2];
+      s2 += double(block[2]) * xI[0] + double(block[5]) * xI[1] + double(block[8]) * xI[2];
+      if (I == J) continue;  // the diagonal block (last of its column) counts once
+      double* yI = out + 3 * I;
+      yI[0] += double(block[0]) * x0 + double(block[1]) * x1 + double(block[2]) * x2;
+      yI[1] += double(block[3]) * x0 + double(block[4]) * x1 + double(block[5]) * x2;
+      yI[2] += double(block[6]) * x0 + double(block[7]) * x1 + double(block[8]) * x2;
+    }
     out[3 * J] = s0;
     out[3 * J + 1] = s1;
     out[3 * J + 2] = s2;

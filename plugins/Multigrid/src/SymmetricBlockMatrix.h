@@ -11,16 +11,18 @@
 // approximate inverse anyway, and its products' relative error of about 1e-7 is far below what
 // the cycle leaves.
 //
-// Layout: block column J holds the blocks (I, J) of its block rows I in increasing order (the
-// union of its 3 columns' rows), each stored as its transpose, column-major (9 values; 3 more at
-// the end of the array, so that a 4-wide load of a block's last column stays inside it). A
-// block that the source stores only in part (a fixed point's identity row, a diagonal mass) gets
-// zeros in its other entries. Block columns follow Eigen's column-major order, so a refill reads
-// and writes both arrays front to back (a block-row copy scatters its writes over the whole
-// matrix). The product is y_J = sum_I B_IJ^T x_I = (A^T x)_J, which is A x for the symmetric
-// matrices this class is for; y_J stays in registers (with AVX2, one 4-wide fused multiply-add
-// per column of a stored block). Symmetry is the caller's premise, not checked: the assembled
-// systems and Galerkin operators of the multigrid are symmetric to round-off.
+// Layout: only the upper triangle of blocks (I <= J; the matrix is symmetric). Block column J
+// holds the blocks (I, J) of its block rows I <= J in increasing order (the union of its 3
+// columns' rows; the diagonal block last), each stored as its transpose S = B_IJ^T,
+// column-major (9 values; 3 more at the end of the array, so that a 4-wide load of a block's
+// last column stays inside it). A block that the source stores only in part (a fixed point's
+// identity row, a diagonal mass) gets zeros in its other entries. Block columns follow Eigen's
+// column-major order, so a refill reads and writes both arrays front to back (a block-row copy
+// scatters its writes over the whole matrix). The product walks the block columns: y_J = sum
+// over I <= J of S x_I (kept in registers: with AVX2, one 4-wide fused multiply-add per column
+// of S) and, for I < J, y_I += S^T x_J (S transposed in registers, y_I's 3 values updated).
+// Symmetry is the caller's premise, not checked: the assembled systems and Galerkin operators
+// of the multigrid are symmetric to round-off.
 #pragma once
 
 #include <Eigen/Core>
