@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "HybridDomainDecompositionSolver.h"
 
-#include "simulation/MechanicalOperations.h"
-
 #include <sstream>
 
 #include "ConvergenceReport.h"
 #include "core/Message.h"
 #include "core/Node.h"
 #include "simulation/MechanicalOperations.h"
+#include "simulation/NodalForces.h"
 #include "simulation/VecId.h"
 
 namespace stroma {
@@ -242,22 +241,10 @@ void HybridDomainDecompositionSolver::publishZoneModels() {
 }
 
 bool HybridDomainDecompositionSolver::readFieldLoads(MechanicalOperations& mop, double dt) {
-  const VecId f = mop.allocDeriv();
-  MechanicalParams mp;
-  mp.dt = dt;
-  mop.computeForce(mp, f);
-  const auto& forces = m_state->readDeriv(f);
-  std::vector<int> nodes;
-  std::vector<Vec3d> values;
-  for (std::size_t i = 0; i < forces.size(); ++i)
-    if (!forces[i].isZero(0)) {
-      nodes.push_back(static_cast<int>(i));
-      values.push_back(forces[i]);
-    }
-  mop.freeVec(f);
-  const bool changed = nodes != m_fieldForceNodes || values != m_fieldForces;
-  m_fieldForceNodes = std::move(nodes);
-  m_fieldForces = std::move(values);
+  NodalForces loads = readNodalForces(mop, *m_state, dt);
+  const bool changed = loads.points != m_fieldForceNodes || loads.forces != m_fieldForces;
+  m_fieldForceNodes = std::move(loads.points);
+  m_fieldForces = std::move(loads.forces);
   return changed;
 }
 

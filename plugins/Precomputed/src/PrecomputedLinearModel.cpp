@@ -13,6 +13,7 @@
 #include "core/Message.h"
 #include "core/Node.h"
 #include "simulation/MechanicalOperations.h"
+#include "simulation/NodalForces.h"
 #include "simulation/ProjectiveConstraint.h"
 
 namespace stroma {
@@ -254,19 +255,15 @@ void PrecomputedLinearModel::solve(MechanicalOperations& mop, double dt) {
     return;
   }
   // Loads: the forces of the node's force fields now, kept where they fall on basis nodes.
-  const VecId f = mop.allocDeriv();
-  MechanicalParams mp;
-  mp.dt = dt;
-  mop.computeForce(mp, f);
-  const auto& forces = m_state->readDeriv(f);
+  const NodalForces loads = readNodalForces(mop, *m_state, dt);
   m_forceNodes.clear();
   m_forces.clear();
-  for (size_t i = 0; i < forces.size(); ++i) {
-    if (forces[i].isZero(0)) continue;
-    if (m_basis->basisIndex(int(i)) >= 0) {
-      m_forceNodes.push_back(int(i));
-      m_forces.push_back(forces[i]);
-    } else if (!m_fixedNode[i] && !m_warnedForce) {
+  for (std::size_t k = 0; k < loads.points.size(); ++k) {
+    const int i = loads.points[k];
+    if (m_basis->basisIndex(i) >= 0) {
+      m_forceNodes.push_back(i);
+      m_forces.push_back(loads.forces[k]);
+    } else if (!m_fixedNode[std::size_t(i)] && !m_warnedForce) {
       m_warnedForce = true;
       msgWarning("a force on node " + std::to_string(i) +
                      ", not a basis node, is ignored (and any other such force): add the node "
@@ -274,7 +271,6 @@ void PrecomputedLinearModel::solve(MechanicalOperations& mop, double dt) {
                  "basisIndices");
     }
   }
-  mop.freeVec(f);
 
   // The imposed set may change while running (a tool grasping other nodes): the kernel
   // refactorises the imposed compliance when it does.
