@@ -322,52 +322,52 @@ KernelTable52& kernelTable52() {
 struct KernelMethod {
   const char* name;
   int cgIterations;  ///< > 0: plain CG with this many iterations
-  int cycles;        ///< multigrid: V-cycles, or flexible-CG iterations when fcg
-  bool full, fcg;
+  int cycles;        ///< multigrid: cycles (the first of `kind`, then V-cycles), or, with fcg,
+                     ///< flexible-CG iterations preconditioned by a cycle of `kind`
+  multigrid::CycleKind kind;
+  bool fcg;
   multigrid::CycleSettings settings;
-  bool cascadic = false;  ///< one cascadic cycle (settings.levelSmoothing per level)
   /// Plain CG: multiply with the 3 x 3 block copy of K (SymmetricBlockMatrix.h) instead of Eigen's
   /// storage; multigrid: cycles on level matrices stored in single precision.
   bool single = false, blocks = false;
 };
 
+constexpr multigrid::CycleKind kV = multigrid::CycleKind::V, kFull = multigrid::CycleKind::full,
+                               kCascadic = multigrid::CycleKind::cascadic;
 const KernelMethod kKernelMethods[] = {
-    {"CG10", 10, 0, false, false, {}},
-    {"CG150", 150, 0, false, false, {}},
-    {"CG150-blocks", 150, 0, false, false, {}, false, false, true},
-    {"CG150-blocks-single", 150, 0, false, false, {}, false, true, true},
-    {"MG4-V(7)", 0, 1, false, false, {7, 150, false, true}},
-    {"FMG4(7)", 0, 1, true, false, {7, 150, false, true}},
-    {"FMG4(2)-LDL", 0, 1, true, false, {2, 150, true, true}},
-    {"FMG4(1)-LDL", 0, 1, true, false, {1, 150, true, true}},
-    {"FCG1-V(2)-LDL", 0, 1, false, true, {2, 150, true, true}},
-    {"FCG2-V(1)-LDL", 0, 2, false, true, {1, 150, true, true}},
-    {"FCG2-V(2)-LDL", 0, 2, false, true, {2, 150, true, true}},
+    {"CG10", 10, 0, kV, false, {}},
+    {"CG150", 150, 0, kV, false, {}},
+    {"CG150-blocks", 150, 0, kV, false, {}, false, true},
+    {"CG150-blocks-single", 150, 0, kV, false, {}, true, true},
+    {"MG4-V(7)", 0, 1, kV, false, {7, 150, false, true}},
+    {"FMG4(7)", 0, 1, kFull, false, {7, 150, false, true}},
+    {"FMG4(2)-LDL", 0, 1, kFull, false, {2, 150, true, true}},
+    {"FMG4(1)-LDL", 0, 1, kFull, false, {1, 150, true, true}},
+    {"FCG1-V(2)-LDL", 0, 1, kV, true, {2, 150, true, true}},
+    {"FCG2-V(1)-LDL", 0, 2, kV, true, {1, 150, true, true}},
+    {"FCG2-V(2)-LDL", 0, 2, kV, true, {2, 150, true, true}},
     // Level matrices in single precision (3 x 3 blocks; SymmetricBlockMatrix.h).
-    {"FMG4(1)-LDL-single", 0, 1, true, false, {1, 150, true, true}, false, true},
+    {"FMG4(1)-LDL-single", 0, 1, kFull, false, {1, 150, true, true}, true},
     // Per-level counts: no smoothing on the fine level (its V-cycle is the coarse correction
     // alone), 2 on the coarser ones.
-    {"FMG4(0,2)-LDL-single", 0, 1, true, false, {1, 150, true, true, {0, 2}}, false, true},
+    {"FMG4(0,2)-LDL-single", 0, 1, kFull, false, {1, 150, true, true, {0, 2}}, true},
     // The fine level only receives the prolongation of the 16^3 level's full cycle
     // (levelCycles 0 1): its error is that of the 16^3 solve plus the 16^3 discretization's
     // (C4(0,300): the 16^3 level nearly solved, 0.49 %).
-    {"FMG4c(0,1)(0,2)-LDL-single", 0, 1, true, false, {1, 150, true, true, {0, 2}, {0, 1}}, false,
-     true},
-    {"FMG4c(0,1)(0,3)-LDL-single", 0, 1, true, false, {1, 150, true, true, {0, 3}, {0, 1}}, false,
-     true},
-    {"FMG4c(0,1)(0,3,2)-LDL-single", 0, 1, true, false, {1, 150, true, true, {0, 3, 2}, {0, 1}},
-     false, true},
-    {"FMG4c(0,1)(0,2,4)-LDL-single", 0, 1, true, false, {1, 150, true, true, {0, 2, 4}, {0, 1}},
-     false, true},
-    {"FMG4c(0,1)(0,3)-LDL-nopost-single", 0, 1, true, false, {1, 150, true, false, {0, 3}, {0, 1}},
-     false, true},
-    {"FMG4c(0,1)(0,4)-LDL-nopost-single", 0, 1, true, false, {1, 150, true, false, {0, 4}, {0, 1}},
-     false, true},
-    {"FMG4c(0,2)(0,2)-LDL-single", 0, 1, true, false, {1, 150, true, true, {0, 2}, {0, 2}}, false,
-     true},
+    {"FMG4c(0,1)(0,2)-LDL-single", 0, 1, kFull, false, {1, 150, true, true, {0, 2}, {0, 1}}, true},
+    {"FMG4c(0,1)(0,3)-LDL-single", 0, 1, kFull, false, {1, 150, true, true, {0, 3}, {0, 1}}, true},
+    {"FMG4c(0,1)(0,3,2)-LDL-single", 0, 1, kFull, false,
+     {1, 150, true, true, {0, 3, 2}, {0, 1}}, true},
+    {"FMG4c(0,1)(0,2,4)-LDL-single", 0, 1, kFull, false,
+     {1, 150, true, true, {0, 2, 4}, {0, 1}}, true},
+    {"FMG4c(0,1)(0,3)-LDL-nopost-single", 0, 1, kFull, false,
+     {1, 150, true, false, {0, 3}, {0, 1}}, true},
+    {"FMG4c(0,1)(0,4)-LDL-nopost-single", 0, 1, kFull, false,
+     {1, 150, true, false, {0, 4}, {0, 1}}, true},
+    {"FMG4c(0,2)(0,2)-LDL-single", 0, 1, kFull, false, {1, 150, true, true, {0, 2}, {0, 2}}, true},
     // Cascadic cycles: CG on each level from the prolongation, no coarse correction going back.
-    {"C4(0,300)-LDL", 0, 1, false, false, {0, 150, true, true, {0, 300}}, true},
-    {"C4(4,16)-LDL-single", 0, 1, false, false, {0, 150, true, true, {4, 16}}, true, true},
+    {"C4(0,300)-LDL", 0, 1, kCascadic, false, {0, 150, true, true, {0, 300}}},
+    {"C4(4,16)-LDL-single", 0, 1, kCascadic, false, {0, 150, true, true, {4, 16}}, true},
 };
 
 void kernelTable52Method(benchmark::State& state, const KernelMethod& method) {
@@ -388,21 +388,13 @@ void kernelTable52Method(benchmark::State& state, const KernelMethod& method) {
                                                    0.0, r, d, q);
     } else if (method.cgIterations > 0) {
       multigrid::MultigridCycle::conjugateGradient(k.A, k.b, x, method.cgIterations, 0.0, r, d, q);
-    } else if (method.cascadic) {
-      cycle.cascadicCycle(x, k.b, method.settings);
     } else if (method.fcg) {
       double residual = 0;
-      cycle.flexibleConjugateGradient(k.A, k.b, x, method.cycles, 0.0,
-                                        method.full ? multigrid::CycleKind::full
-                                                    : multigrid::CycleKind::V,
-                                        method.settings, residual);
+      cycle.flexibleConjugateGradient(k.A, k.b, x, method.cycles, 0.0, method.kind,
+                                      method.settings, residual);
     } else {
-      for (int c = 0; c < method.cycles; ++c) {
-        if (c == 0 && method.full)
-          cycle.fullCycle(x, k.b, method.settings);
-        else
-          cycle.vCycle(0, x, k.b, method.settings);
-      }
+      cycle.cycleFromZero(method.kind, k.b, x, method.settings);
+      for (int c = 1; c < method.cycles; ++c) cycle.vCycle(0, x, k.b, method.settings);
     }
     best = std::min(best, cpuSeconds() - start);
   }

@@ -97,16 +97,6 @@ void MultigridCycle::vCycle(int level, Eigen::VectorXd& x, const Eigen::VectorXd
     conjugateGradient(A, b, x, settings.smoothingAt(level), 0.0, w.r, w.p, w.q);
 }
 
-void MultigridCycle::fullCycle(Eigen::VectorXd& x, const Eigen::VectorXd& b,
-                               const CycleSettings& settings) {
-  nestedIteration(x, b, settings, CycleKind::full);
-}
-
-void MultigridCycle::cascadicCycle(Eigen::VectorXd& x, const Eigen::VectorXd& b,
-                                   const CycleSettings& settings) {
-  nestedIteration(x, b, settings, CycleKind::cascadic);
-}
-
 void MultigridCycle::nestedIteration(Eigen::VectorXd& x, const Eigen::VectorXd& b,
                                      const CycleSettings& settings, CycleKind kind) {
   const int coarsest = levels() - 1;
@@ -134,8 +124,8 @@ void MultigridCycle::cycleFromZero(CycleKind kind, const Eigen::VectorXd& r, Eig
   z.setZero(r.size());
   switch (kind) {
     case CycleKind::V: vCycle(0, z, r, settings); break;
-    case CycleKind::full: fullCycle(z, r, settings); break;
-    case CycleKind::cascadic: cascadicCycle(z, r, settings); break;
+    case CycleKind::full:
+    case CycleKind::cascadic: nestedIteration(z, r, settings, kind); break;
   }
 }
 

@@ -59,7 +59,13 @@ struct CycleSettings {
   }
 };
 
-/// The cycle of a multigrid iteration (see above and cascadicCycle).
+/// The cycle of a multigrid iteration: V (above), full (above), or cascadic (Bornemann and
+/// Deuflhard 1996, "The cascadic multigrid method for elliptic problems", Numer. Math. 75): b
+/// restricted to every level, the coarsest solved, then on each finer level CG for
+/// smoothingAt(level) iterations from the prolongation of the coarser result, with no coarse
+/// correction going back. Cascadic is the cheapest way to the discretization error when the
+/// coarse levels are accurate: the fine level costs 1 + smoothingAt(0) products (none when it
+/// is 0: the interpolated result).
 enum class CycleKind { V, full, cascadic };
 
 /// What changed since the last MultigridCycle::setOperators, and how to store the levels.
@@ -106,16 +112,6 @@ class MultigridCycle {
   /// One V-cycle on level `level` (0 = finest) from and into x.
   void vCycle(int level, Eigen::VectorXd& x, const Eigen::VectorXd& b,
               const CycleSettings& settings);
-  /// One full multigrid cycle on level 0 (x is overwritten).
-  void fullCycle(Eigen::VectorXd& x, const Eigen::VectorXd& b, const CycleSettings& settings);
-  /// One cascadic cycle on level 0 (x is overwritten; Bornemann and Deuflhard 1996, "The
-  /// cascadic multigrid method for elliptic problems", Numer. Math. 75): b restricted to every
-  /// level, the coarsest solved, then on each finer level CG for smoothingAt(level) iterations
-  /// from the prolongation of the coarser result, with no coarse correction going back. The
-  /// cheapest way to the discretization error when the coarse levels are accurate: the fine
-  /// level costs 1 + smoothingAt(0) products (none when it is 0: the interpolated result).
-  void cascadicCycle(Eigen::VectorXd& x, const Eigen::VectorXd& b, const CycleSettings& settings);
-
   /// One cycle of `kind` from zero: z = an approximate solution of A_0 z = r.
   void cycleFromZero(CycleKind kind, const Eigen::VectorXd& r, Eigen::VectorXd& z,
                      const CycleSettings& settings);

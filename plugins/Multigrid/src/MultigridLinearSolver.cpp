@@ -201,10 +201,8 @@ void MultigridLinearSolver::iterateCycles(const Eigen::SparseMatrix<double>& A, 
   while (report.iterations < d_iterations.value()) {
     // Full and cascadic cycles start from zero: after a warm start, and after the first cycle,
     // V-cycles improve the current solution instead.
-    if (report.iterations == 0 && d_cycle.value() == MultigridCycleKind::full && !warm)
-      m_cycle.fullCycle(m_solution, m_rhs, settings);
-    else if (report.iterations == 0 && d_cycle.value() == MultigridCycleKind::cascadic && !warm)
-      m_cycle.cascadicCycle(m_solution, m_rhs, settings);
+    if (report.iterations == 0 && !warm)
+      m_cycle.cycleFromZero(d_cycle.value(), m_rhs, m_solution, settings);
     else
       m_cycle.vCycle(0, m_solution, m_rhs, settings);
     ++report.iterations;

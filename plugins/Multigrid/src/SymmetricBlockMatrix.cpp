@@ -55,8 +55,12 @@ void SymmetricBlockMatrix::buildPattern(const Eigen::SparseMatrix<double>& A) {
 }
 
 template <class Scalar>
-void SymmetricBlockMatrix::fill(const Eigen::SparseMatrix<double>& A, std::vector<Scalar>& values) const {
-  values.assign(9 * m_blockRows.size() + kPadding, Scalar(0));
+void SymmetricBlockMatrix::fill(const Eigen::SparseMatrix<double>& A, std::vector<Scalar>& values,
+                                bool newPattern) const {
+  // The slots no entry of A reaches (the rest of a partly stored block, the padding) stay zero
+  // from the last zeroing while the pattern holds: a refill only overwrites the entries.
+  if (newPattern || values.size() != 9 * m_blockRows.size() + kPadding)
+    values.assign(9 * m_blockRows.size() + kPadding, Scalar(0));
   const double* source = A.valuePtr();
   const std::size_t count = m_destination.size();
   for (std::size_t k = 0; k < count; ++k)
@@ -67,14 +71,15 @@ void SymmetricBlockMatrix::assign(const Eigen::SparseMatrix<double>& A, Precisio
                          bool samePattern) {
   if (!A.isCompressed())
     throw std::invalid_argument("SymmetricBlockMatrix: the matrix is not in compressed form");
-  if (!samePattern || std::size_t(A.nonZeros()) != m_destination.size() || A.rows() != rows())
-    buildPattern(A);
+  const bool newPattern =
+      !samePattern || std::size_t(A.nonZeros()) != m_destination.size() || A.rows() != rows();
+  if (newPattern) buildPattern(A);
   m_precision = precision;
   if (precision == Precision::single) {
-    fill(A, m_single);
+    fill(A, m_single, newPattern);
     m_double.clear();
   } else {
-    fill(A, m_double);
+    fill(A, m_double, newPattern);
     m_single.clear();
   }
 }

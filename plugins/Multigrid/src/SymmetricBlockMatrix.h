@@ -52,7 +52,9 @@ class SymmetricBlockMatrix {
  private:
   void buildPattern(const Eigen::SparseMatrix<double>& A);
   template <class Scalar>
-  void fill(const Eigen::SparseMatrix<double>& A, std::vector<Scalar>& values) const;
+  /// Copies A's values into their slots; zeroes the array first when the pattern is new.
+  void fill(const Eigen::SparseMatrix<double>& A, std::vector<Scalar>& values,
+            bool newPattern) const;
   template <class Scalar>
   void multiplyWith(const std::vector<Scalar>& values, const Eigen::VectorXd& x,
                     Eigen::VectorXd& y) const;
