@@ -119,6 +119,12 @@ int runCommand(const std::vector<std::string>& args) {
       code = code ? code : kSimulationFailure;
     }
   }
+  if (code == kSuccess && scene.log().runFailureCount() > 0) {
+    // onDivergence="warn" let a diverged state go on: the run is still not a success.
+    std::cerr << "stroma: the run went on after its state diverged (onDivergence=\"warn\"); "
+                 "see the warnings above\n";
+    code = kSimulationFailure;
+  }
   printTimingSummary(scene, scene.timing(), done, dt);
   printComponentSummaries(scene.root());
   return code;

@@ -61,9 +61,10 @@ MessageLog& Base::messageLog() const {
   return *m_ownLog;
 }
 
-void Base::send(MessageLevel level, std::string text, std::string field) const {
+void Base::send(MessageLevel level, std::string text, std::string field, bool failsRun) const {
   Message m;
   m.level = level;
+  m.failsRun = failsRun;
   m.text = std::move(text);
   m.componentPath = path();
   m.componentClass = m_className;
@@ -78,6 +79,10 @@ void Base::msgInfo(std::string text, std::string field) const {
 
 void Base::msgWarning(std::string text, std::string field) const {
   send(MessageLevel::warning, std::move(text), std::move(field));
+}
+
+void Base::msgRunFailure(std::string text, std::string field) const {
+  send(MessageLevel::warning, std::move(text), std::move(field), true);
 }
 
 void Base::msgError(std::string text, std::string field) {

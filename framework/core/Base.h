@@ -70,6 +70,9 @@ class Base {
 
   void msgInfo(std::string text, std::string field = {}) const;
   void msgWarning(std::string text, std::string field = {}) const;
+  /// A warning that lets the run go on but makes it end as a failure (Message::failsRun): a
+  /// state that diverged while the scene asked to continue.
+  void msgRunFailure(std::string text, std::string field = {}) const;
   /// Reports an error. Use from init() for bad input, after which the component is invalid.
   void msgError(std::string text, std::string field = {});
   /// The log messages go to: the scene's, or one of the object's own when it is not in a scene.
@@ -82,7 +85,7 @@ class Base {
   friend class Node;
   friend class BaseLink;
   friend void internal::registerData(Base*, BaseData*);
-  void send(MessageLevel level, std::string text, std::string field) const;
+  void send(MessageLevel level, std::string text, std::string field, bool failsRun = false) const;
 
   std::string m_className;
   std::string m_templateName;

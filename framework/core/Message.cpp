@@ -79,7 +79,9 @@ std::string formatAsJson(const Message& m) {
   appendJsonString(out, m.field);
   out << ",\"file\":";
   appendJsonString(out, m.where.file);
-  out << ",\"line\":" << m.where.line << '}';
+  out << ",\"line\":" << m.where.line;
+  if (m.failsRun) out << ",\"failsRun\":true";
+  out << '}';
   return out.str();
 }
 
@@ -112,6 +114,13 @@ std::size_t MessageLog::count(MessageLevel level) const {
   std::lock_guard lock(m_mutex);
   std::size_t n = 0;
   for (const auto& m : m_messages) n += (m.level == level);
+  return n;
+}
+
+std::size_t MessageLog::runFailureCount() const {
+  std::lock_guard lock(m_mutex);
+  std::size_t n = 0;
+  for (const auto& m : m_messages) n += (m.level == MessageLevel::error || m.failsRun);
   return n;
 }
 

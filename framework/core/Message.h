@@ -27,6 +27,9 @@ struct Message {
   std::string componentClass;  ///< "TetrahedronFEMForceField"
   std::string field;           ///< "youngModulus"
   SourceLocation where;
+  /// A warning after which the run may go on but cannot end as a success: its state diverged
+  /// and the scene asked to continue (onDivergence="warn"). `stroma run` then exits with 1.
+  bool failsRun = false;
 };
 
 const char* levelName(MessageLevel level);
@@ -79,6 +82,8 @@ class MessageLog {
 
   std::size_t count(MessageLevel level) const;
   std::size_t errorCount() const { return count(MessageLevel::error); }
+  /// Messages that make the run a failure: errors, and warnings marked `failsRun`.
+  std::size_t runFailureCount() const;
   std::vector<Message> messages() const;
   void clear();
 

@@ -2,7 +2,9 @@
 // Divergence detection at run time (DivergenceMonitor.h): each kind is found on a scene made to
 // diverge, and reported with the step, the solver and the worst vertex. With
 // onDivergence="stop" it is an error (the step fails, `stroma run` exits with 1); with "warn" a
-// single warning and the run goes on. A run that does not diverge reports nothing.
+// single warning and the run goes on, and when the state grew by orders of magnitude (energy
+// growth) the run still ends as a failure (exit code 1). A run that does not diverge reports
+// nothing.
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -20,6 +22,7 @@ struct Diverging {
   std::string kind;    ///< "divergence (...) at step N"
   std::string vertex;  ///< "worst vertex: vertex I of /root/Body/dofs"
   std::string field;
+  bool failsRun;  ///< whether a warn-mode run still ends as a failure (the state blew up)
 };
 
 std::string withMode(const std::string& xml, const std::string& mode) {
@@ -57,14 +60,26 @@ std::vector<Diverging> divergingScenes() {
            R"(<EulerExplicitSolver name="ode" symplectic="false" onDivergence="MODE"/>)", 100, 1.0,
            "1 0 0  0 2 0", "0 0 0  0 0 5", 0.1),
        40, "divergence (energy growth) at step 40, time 4 s",
-       "worst vertex: vertex 1 of /root/Body/dofs", "energyGrowth"},
+       "worst vertex: vertex 1 of /root/Body/dofs", "energyGrowth", true},
+      // The same at omega h = 50: the state is multiplied by about 50 at each step, in a mode
+      // that turns by nearly a quarter of a period per step (T alone alternates between large
+      // and small growths). The sum of T over two steps grows 5, 2e3, 17, 5e3... times: the
+      // third growth in a row is at step 5.
+      {"BlowUp",
+       oscillatorScene(
+           R"(<EulerExplicitSolver name="ode" symplectic="false" onDivergence="MODE"/>)", 1e4, 4.0,
+           "1 0 0  0 2 0", "0 0 0  0 0 0", 1.0),
+       5,
+       "divergence (energy growth) at step 5, time 5 s: the kinetic energy of two consecutive "
+       "steps grew",
+       "worst vertex: vertex ", "energyGrowth", true},
       // One CG iteration on the stiff chain: far from the solution.
       {"LinearSolve", chainScene(R"(<EulerImplicitSolver name="ode" onDivergence="MODE"/>
                      <CGLinearSolver name="cg" iterations="1" tolerance="1e-12"/>)"),
        1,
        "divergence (unconverged linear solve) at step 1, time 0.1 s: the linear solver "
        "/root/Body/cg stopped after 1 iterations",
-       "worst vertex: vertex ", "maxLinearResidual"},
+       "worst vertex: vertex ", "maxLinearResidual", false},
       // A tangent of the wrong sign: every Newton direction raises the residual.
       {"StaticNewtonStall",
        chainScene(R"(<StaticSolver name="ode" newton_iterations="5" onDivergence="MODE"/>
@@ -73,7 +88,7 @@ std::vector<Diverging> divergingScenes() {
        1,
        "divergence (stalled Newton iteration) at step 1, time 0.1 s: no step along the Newton "
        "direction",
-       "worst vertex: vertex ", "maxNbIterationsLineSearch"},
+       "worst vertex: vertex ", "maxNbIterationsLineSearch", false},
       {"ImplicitEulerNewtonStall",
        chainScene(R"(<EulerImplicitSolver name="ode" newtonIterations="5" onDivergence="MODE"/>
                      <SparseLDLSolver/>)",
@@ -81,7 +96,7 @@ std::vector<Diverging> divergingScenes() {
        1,
        "divergence (stalled Newton iteration) at step 1, time 1 s: Newton stopped after 5 linear "
        "solves",
-       "worst vertex: vertex ", "newtonIterations"},
+       "worst vertex: vertex ", "newtonIterations", false},
   };
 }
 
@@ -118,8 +133,10 @@ TEST_P(DivergenceKinds, WarnModeWarnsOnceAndGoesOn) {
     EXPECT_NE(m.text.find(d.kind), std::string::npos) << m.text;
     EXPECT_NE(m.text.find(d.vertex), std::string::npos) << m.text;
     EXPECT_NE(m.text.find("The run goes on"), std::string::npos) << m.text;
+    EXPECT_EQ(m.failsRun, d.failsRun) << m.text;
   }
   EXPECT_EQ(found, 1) << s.log();
+  EXPECT_EQ(s.scene().log().runFailureCount(), d.failsRun ? 1u : 0u) << s.log();
 }
 
 INSTANTIATE_TEST_SUITE_P(ODESolver, DivergenceKinds, testing::ValuesIn(divergingScenes()),
@@ -216,28 +233,71 @@ std::string springChain(const std::string& solvers, double dt) {
 </Node>)";
 }
 
-TEST(StromaRun, ExitsWith1OnADivergenceInStopModeAnd0WithAWarningInWarnMode) {
+TEST(StromaRun, ExitsWith1OnADivergenceInStopModeAndInWarnModeWhenTheStateGrew) {
+  // Stop mode ends the run at the divergence. Warn mode goes on; it still exits with 1 when
+  // the state grew by orders of magnitude (energy growth), and with 0 after a linear solve
+  // stopped unconverged (the state may be fine).
   struct CliCase {
     std::string solvers, kind;
     double dt;
     int steps;
+    int warnExitCode;
   };
   for (const CliCase& c :
        {CliCase{R"(<EulerExplicitSolver symplectic="false" onDivergence="MODE"/>)",
-                "divergence (energy growth) at step", 0.01, 60},
+                "divergence (energy growth) at step", 0.01, 60, 1},
         CliCase{R"(<EulerImplicitSolver onDivergence="MODE"/><CGLinearSolver iterations="1"/>)",
-                "divergence (unconverged linear solve) at step 1", 0.1, 3}}) {
+                "divergence (unconverged linear solve) at step 1", 0.1, 3, 0}}) {
     SCOPED_TRACE(c.kind);
     std::string output;
     EXPECT_EQ(runCli(withMode(springChain(c.solvers, c.dt), "stop"), c.steps, output), 1) << output;
     EXPECT_NE(output.find("error: /root/Body/"), std::string::npos) << output;
     EXPECT_NE(output.find(c.kind), std::string::npos) << output;
     EXPECT_NE(output.find("worst vertex: vertex "), std::string::npos) << output;
-    EXPECT_EQ(runCli(withMode(springChain(c.solvers, c.dt), "warn"), c.steps, output), 0) << output;
+    EXPECT_EQ(runCli(withMode(springChain(c.solvers, c.dt), "warn"), c.steps, output),
+              c.warnExitCode)
+        << output;
     EXPECT_NE(output.find("warning: /root/Body/"), std::string::npos) << output;
     EXPECT_NE(output.find(c.kind), std::string::npos) << output;
     EXPECT_EQ(output.find("error:"), std::string::npos) << output;
+    EXPECT_EQ(output.find("the run went on after its state diverged") != std::string::npos,
+              c.warnExitCode == 1)
+        << output;
   }
+}
+
+TEST(StromaRun, ABlowUpIsCaughtWithinFiveStepsAndNeverExits0) {
+  // The issue's case: symplectic Euler at dt = 0.5 s on a stiff hexahedral grid whose bound
+  // is about 1e-5 s (the load-time warning says so). Before the blow-up check, 20 steps
+  // ended with positions of 1e193 m and exit code 0.
+  const std::string grid = R"(<Node name="root" dt="0.5" gravity="0 -9.81 0">
+  <Node name="Grid">
+    <EulerExplicitSolver onDivergence="MODE"/>
+    <RegularGridTopology name="grid" min="0 0 0" max="0.1 0.1 0.1" n="4 4 4"/>
+    <MechanicalObject name="dofs"/>
+    <UniformMass totalMass="0.1"/>
+    <HexahedronFEMForceField method="large" youngModulus="1e6" poissonRatio="0.3"/>
+    <FixedConstraint indices="0 1 2 3"/>
+  </Node>
+</Node>)";
+  auto stepOfReport = [](const std::string& output) {
+    const std::string marker = "divergence (energy growth) at step ";
+    const std::size_t at = output.find(marker);
+    return at == std::string::npos ? -1 : std::atoi(output.c_str() + at + marker.size());
+  };
+  std::string output;
+  EXPECT_EQ(runCli(withMode(grid, "warn"), 20, output), 1) << output;
+  EXPECT_NE(output.find("is above the stability bound"), std::string::npos) << output;
+  const int warned = stepOfReport(output);
+  EXPECT_GE(warned, 1) << output;
+  EXPECT_LE(warned, 5) << output;
+  EXPECT_NE(output.find("but ends as a failure"), std::string::npos) << output;
+  EXPECT_NE(output.find("the run went on after its state diverged"), std::string::npos) << output;
+
+  // In stop mode the time step is refused before anything moves; without that refusal
+  // (no bound check: the state's first steps) the blow-up check stops it within 5 steps.
+  EXPECT_EQ(runCli(withMode(grid, "stop"), 20, output), 1) << output;
+  EXPECT_NE(output.find("error: /root/Grid/"), std::string::npos) << output;
 }
 
 TEST(StromaRun, ExitsWith1WhenStaticNewtonStallsInStopMode) {
