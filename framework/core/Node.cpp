@@ -79,6 +79,21 @@ Base* Node::findObject(std::string_view name) const {
   return nullptr;
 }
 
+void Node::addAmbiguousName(std::string name, std::string why) {
+  for (auto& [known, reason] : m_ambiguousNames)
+    if (known == name) {
+      reason += "; " + why;
+      return;
+    }
+  m_ambiguousNames.emplace_back(std::move(name), std::move(why));
+}
+
+const std::string* Node::ambiguity(std::string_view name) const {
+  for (const auto& [known, why] : m_ambiguousNames)
+    if (known == name) return &why;
+  return nullptr;
+}
+
 double Node::dt() const {
   for (const Node* n = this; n; n = n->parent())
     if (n->d_dt.isSet() || !n->parent()) return n->d_dt.value();

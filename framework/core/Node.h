@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/Base.h"
@@ -60,6 +61,13 @@ class Node final : public Base {
   Node* findChild(std::string_view name) const;
   Base* findObject(std::string_view name) const;
 
+  /// A name that two siblings were given in the scene (two objects, or two child nodes): the
+  /// later one was renamed, and a link naming it is refused rather than resolved to either.
+  /// `why` says which objects had it (paths and lines) and what they are now called.
+  void addAmbiguousName(std::string name, std::string why);
+  /// The explanation of `name`'s ambiguity in this node, or nullptr when it is not ambiguous.
+  const std::string* ambiguity(std::string_view name) const;
+
   /// First object of type T in this node.
   template <class T>
   T* get() const {
@@ -102,6 +110,7 @@ class Node final : public Base {
  private:
   std::vector<std::unique_ptr<Node>> m_children;
   std::vector<std::unique_ptr<Base>> m_objects;
+  std::vector<std::pair<std::string, std::string>> m_ambiguousNames;  // name, why
   MessageLog* m_log = nullptr;
   const ThreadPool* m_pool = nullptr;
 };

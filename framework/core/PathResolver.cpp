@@ -45,6 +45,15 @@ std::string notFound(std::string_view what, const Node& where, bool andAncestors
   return error;
 }
 
+// A name two siblings had in the scene: refused rather than resolved to either (Node.h).
+bool isAmbiguous(const Node& node, std::string_view name, std::string& error) {
+  const std::string* why = node.ambiguity(name);
+  if (!why) return false;
+  error = "'" + std::string(name) + "' is ambiguous in " + node.path() + ": " + *why +
+          "; give them different names and link to the one meant";
+  return true;
+}
+
 Base* findHere(const Node& node, std::string_view name) {
   if (Base* object = node.findObject(name)) return object;
   if (Node* child = node.findChild(name)) return child;
@@ -106,8 +115,10 @@ Base* resolveObjectPath(const Node& from, std::string_view path, std::string& er
 
   // A bare name: this node, then the ancestors (SOFA's search upwards).
   if (!absolute && segments.size() == 1 && segments[0] != "." && segments[0] != "..") {
-    for (const Node* n = &from; n; n = n->parent())
+    for (const Node* n = &from; n; n = n->parent()) {
+      if (isAmbiguous(*n, segments[0], error)) return nullptr;
       if (Base* found = findHere(*n, segments[0])) return found;
+    }
     error = notFound(segments[0], from, true);
     return nullptr;
   }
@@ -128,6 +139,7 @@ Base* resolveObjectPath(const Node& from, std::string_view path, std::string& er
       current = current->parent();
       continue;
     }
+    if (isAmbiguous(*current, segment, error)) return nullptr;
     if (last) {
       if (Base* found = findHere(*current, segment)) return found;
       error = notFound(segment, *current);

@@ -71,6 +71,7 @@ class GraphBuilder {
       if (child.tag == "Node" || child.tag == "node") {
         Node& sub = node.createChild("node");
         fillNode(sub, child);
+        if (child.attribute("name")) renameDuplicate(node, sub, sub.name(), "child nodes");
       } else {
         addComponent(node, child);
       }
@@ -109,10 +110,41 @@ class GraphBuilder {
     added.setSourceLocation(e.where);
     added.setName(givenName ? *givenName : uniqueName(node, displayName, &added));
     setAttributes(added, e);
+    if (givenName) renameDuplicate(node, added, *givenName, "objects");
   }
 
+  // A name already given to a sibling of the same kind (SOFA warns and renames): `later` gets
+  // a unique name, and the name becomes ambiguous in `node`, so that no link silently picks
+  // one of the two.
+  static void renameDuplicate(Node& node, Base& later, std::string name, const char* kind) {
+    const Base* first = nullptr;
+    if (dynamic_cast<Node*>(&later))
+      first = node.findChild(name);
+    else
+      first = node.findObject(name);
+    if (!first || first == &later) return;
+    const std::string renamed = uniqueName(node, name, &later);
+    later.setName(renamed);
+    auto where = [](const Base& b) {
+      const int line = b.sourceLocation().line;
+      return b.className() + (line > 0 ? " at line " + std::to_string(line) : std::string());
+    };
+    const std::string why = std::string("two ") + kind + " were named '" + name + "' (" +
+                            where(*first) + ", " + where(later) + "); the second is now '" +
+                            renamed + "'";
+    later.msgWarning(why + ", and a link to '" + name + "' is an error", "name");
+    node.addAmbiguousName(name, why);
+  }
+
+  // `base`, or `base` followed by the first number that no sibling of `self` of its kind
+  // (objects, or child nodes) has.
   static std::string uniqueName(const Node& node, const std::string& base, const Base* self) {
     auto taken = [&](const std::string& n) {
+      if (dynamic_cast<const Node*>(self)) {
+        for (const auto& c : node.children())
+          if (c.get() != self && c->name() == n) return true;
+        return false;
+      }
       for (const auto& o : node.objects())
         if (o.get() != self && o->name() == n) return true;
       return false;

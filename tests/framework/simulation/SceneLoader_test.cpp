@@ -597,5 +597,69 @@ TEST_F(SceneLoaderTest, UnnamedComponentsGetUniqueNames) {
   EXPECT_EQ(scene.root().children()[0]->name(), "node");
 }
 
+TEST_F(SceneLoaderTest, TwoObjectsWithOneNameAreReportedAndTheSecondRenamed) {
+  // As SOFA does: a warning, and the second object renamed so that names stay unique.
+  ASSERT_TRUE(load(R"(<Node name="root">
+  <Node name="Body">
+    <MechanicalObject name="dofs" position="0 0 0"/>
+    <MechanicalObject name="dofs" position="1 1 1"/>
+  </Node>
+</Node>
+)")) << describe(scene.log());
+  const Node& body = *scene.root().children().front();
+  ASSERT_EQ(body.objects().size(), 2u);
+  EXPECT_EQ(body.objects()[0]->name(), "dofs");
+  EXPECT_EQ(body.objects()[1]->name(), "dofs1");
+  std::vector<Message> warnings;
+  for (const Message& m : scene.log().messages())
+    if (m.level == MessageLevel::warning) warnings.push_back(m);
+  ASSERT_EQ(warnings.size(), 1u) << describe(scene.log());
+  const Message& w = warnings.front();
+  EXPECT_NE(w.text.find("two objects were named 'dofs' (MechanicalObject at line 3, "
+                        "MechanicalObject at line 4); the second is now 'dofs1'"),
+            std::string::npos)
+      << w.text;
+  expectPlace(w, file, 4, "/root/Body/dofs1", "MechanicalObject", "name");
+}
+
+TEST_F(SceneLoaderTest, ALinkToADuplicatedNameIsAnErrorNotEitherObject) {
+  EXPECT_FALSE(load(R"(<Node name="root">
+  <Node name="Body">
+    <MechanicalObject name="dofs" position="0 0 0"/>
+    <MechanicalObject name="dofs" position="1 1 1"/>
+    <TestCounter name="counter" mstate="@dofs"/>
+    <MechanicalObject name="copy" position="@dofs.position"/>
+  </Node>
+  <Node name="Other">
+    <TestCounter name="far" mstate="@/Body/dofs"/>
+  </Node>
+</Node>
+)"));
+  const Message m = error({"broken link '@dofs'", "'dofs' is ambiguous in /root/Body",
+                           "two objects were named 'dofs'", "give them different names"});
+  expectPlace(m, file, 5, "/root/Body/counter", "TestCounter", "mstate");
+  error({"'dofs' is ambiguous in /root/Body"});  // the Data link of 'copy'
+  const Message far = error({"broken link '@/Body/dofs'", "'dofs' is ambiguous"});
+  expectPlace(far, file, 9, "/root/Other/far", "TestCounter", "mstate");
+  // The renamed object is still reachable by its new name.
+  std::string why;
+  EXPECT_NE(resolveObjectPath(scene.root(), "/Body/dofs1", why), nullptr) << why;
+}
+
+TEST_F(SceneLoaderTest, TwoChildNodesWithOneNameAreReportedAndLinksThroughThemRefused) {
+  EXPECT_FALSE(load(R"(<Node name="root">
+  <Node name="Organ"><MechanicalObject name="dofs" position="0 0 0"/></Node>
+  <Node name="Organ"><MechanicalObject name="dofs" position="1 0 0"/></Node>
+  <TestCounter name="counter" mstate="@Organ/dofs"/>
+</Node>
+)"));
+  ASSERT_EQ(scene.root().children().size(), 2u);
+  EXPECT_EQ(scene.root().children()[1]->name(), "Organ1");
+  const Message m = error({"'Organ' is ambiguous in /root",
+                           "two child nodes were named 'Organ' "
+                           "(Node at line 2, Node at line 3)"});
+  expectPlace(m, file, 4, "/root/counter", "TestCounter", "mstate");
+}
+
 }  // namespace
 }  // namespace stroma::test
