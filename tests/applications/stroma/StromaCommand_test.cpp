@@ -262,6 +262,36 @@ TEST(StromaCommand, HelpListsTheCommands) {
   }
 }
 
+TEST(StromaCommand, EveryCommandAnswersHelpWithItsOwnUsage) {
+  // Each command, with --help or -h anywhere among its arguments (even beside a scene or a
+  // bad option), prints its own usage on stdout and exits with 0; `stroma help COMMAND` too.
+  const std::map<std::string, std::vector<std::string>> own = {
+      {"run", {"stroma run SCENE", "--export-every K", "--data-path DIR", "Exit codes"}},
+      {"check", {"stroma check SCENE", "stroma check --stability", "--log-json FILE"}},
+      {"bench", {"stroma bench STUDY.xml", "--quick", "--save-scenes"}},
+      {"list", {"stroma list [--plugin NAME]"}},
+      {"doc", {"stroma doc COMPONENT", "--template"}},
+      {"plugin-index", {"stroma plugin-index LIB --output FILE"}}};
+  for (const auto& [command, parts] : own) {
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{command, "--help"},
+          {command, "-h"},
+          {command, kKernelScene, "--no-such-option", "--help"},
+          {"help", command}}) {
+      const CommandResult r = runStroma(args);
+      SCOPED_TRACE(args.back());
+      EXPECT_EQ(r.exitCode, 0) << show(r);
+      EXPECT_TRUE(r.err.empty()) << show(r);
+      for (const std::string& part : parts)
+        EXPECT_TRUE(has(r.out, part)) << part << '\n' << show(r);
+      // Its own usage only: no other command's line.
+      for (const auto& [other, otherParts] : own)
+        if (other != command)
+          EXPECT_FALSE(has(r.out, otherParts.front())) << other << '\n' << show(r);
+    }
+  }
+}
+
 TEST(StromaCommand, NoArgumentsIsAUsageError) {
   const CommandResult r = runStroma({});
   EXPECT_EQ(r.exitCode, 2) << show(r);

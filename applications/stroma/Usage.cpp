@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: MIT
+#include "Usage.h"
+
+#include <algorithm>
+
+namespace stroma::cli {
+
+namespace {
+
+struct CommandHelp {
+  std::string_view name;
+  std::string_view synopsis;       ///< the command line(s) and what they do
+  bool takesSceneOptions = false;  ///< --data-path, --log-json, --verbose
+};
+
+// clang-format off
+const CommandHelp kCommands[] = {
+    {"run", R"(  stroma run SCENE [options]        load a scene, run it, print a timing summary
+      -n STEPS                      number of time steps (default 100)
+      --dt DT                       time step, overriding the scene's (s)
+      --threads N                   threads for parallel element loops (default: all cores)
+      --export-state FILE           write every mechanical state at the end (state format:
+                                    docs/state-format.md)
+      --export-every K              ... and also every K steps (with step 0)
+)", true},
+    {"check", R"(  stroma check SCENE [options]      load a scene and report every problem, without running it
+  stroma check --stability [--quick] [--csv FILE] [--save-scenes DIR]
+                                    the stability suite: each model (linear, corotational and
+                                    hyperelastic tetrahedra, tensor-mass, hexahedra) with each
+                                    solver (implicit Euler + CG or LDL, static, central
+                                    differences, symplectic Euler, RK4) on extreme cases (Young's
+                                    modulus 1e2..1e10 Pa, Poisson 0.3..0.4999, dt 1e-5..1 s,
+                                    slivers, inverted elements, a load of 100 E, an impact):
+                                    stable / stalled / refused / diverged, with the reason;
+                                    exit code 1 only when a case fails to load or throws;
+                                    --save-scenes writes each case's scene, for stroma run
+)", true},
+    {"bench", R"(  stroma bench STUDY.xml [options]  run a study (scenes x models, resolutions, solvers, time
+                                    steps), write DIR/STUDY.csv and DIR/STUDY.png (error
+                                    against run time); format: bench/studies/README.md
+      --quick                       only the study's quick rows and steps
+      --output DIR                  where the CSV and the plot go (default bench-results)
+      --threads N                   threads per scene (default 1; 0: all cores)
+      --data-path DIR               as for run
+      --save-scenes                 also write each row's scene as DIR/STUDY-scenes/rowN.scn
+      --verbose                     print the scenes' info messages too
+)", false},
+    {"list", R"(  stroma list [--plugin NAME]       available components, by plugin
+)", false},
+    {"doc", R"(  stroma doc COMPONENT [--template T]
+                                    every field of a component: type, default, unit, help
+                                    (--template: of that template, as Rigid3d)
+)", false},
+    {"plugin-index", R"(  stroma plugin-index LIB --output FILE
+                                    write the component index of a plugin library (build step)
+)", false},
+};
+// clang-format on
+
+constexpr std::string_view kHeader = "Stroma: interactive simulation of deformable bodies.\n";
+
+constexpr std::string_view kSceneOptions = R"(Options of run and check:
+  --data-path DIR                   also search DIR for relative file names (repeatable; the
+                                    environment variable STROMA_DATA_PATH does the same)
+  --log-json FILE                   also write every message as JSON lines to FILE
+  --verbose                         print info messages too
+)";
+
+constexpr std::string_view kFooter = R"(
+Plugins are found in STROMA_PLUGIN_PATH, then beside the Stroma library.
+Exit codes: 0 success, 1 simulation failure (a step failed, or the state diverged and the scene
+let the run go on), 2 bad input or usage.
+)";
+
+}  // namespace
+
+const std::vector<std::string_view>& commandNames() {
+  static const std::vector<std::string_view> names = [] {
+    std::vector<std::string_view> out;
+    for (const CommandHelp& c : kCommands) out.push_back(c.name);
+    return out;
+  }();
+  return names;
+}
+
+std::string generalUsage() {
+  std::string text(kHeader);
+  text += "\nUsage:\n";
+  for (const CommandHelp& c : kCommands) text += c.synopsis;
+  text += "  stroma COMMAND --help             the usage of one command\n";
+  text += "  stroma --version | --help\n\n";
+  text += kSceneOptions;
+  text += kFooter;
+  return text;
+}
+
+std::string commandUsage(std::string_view command) {
+  for (const CommandHelp& c : kCommands) {
+    if (c.name != command) continue;
+    std::string text = "Usage:\n";
+    text += c.synopsis;
+    if (c.takesSceneOptions) {
+      text += '\n';
+      text += kSceneOptions;
+    }
+    text += kFooter;
+    return text;
+  }
+  return {};
+}
+
+bool asksForHelp(const std::vector<std::string>& args) {
+  return std::any_of(args.begin(), args.end(),
+                     [](const std::string& a) { return a == "--help" || a == "-h"; });
+}
+
+}  // namespace stroma::cli
