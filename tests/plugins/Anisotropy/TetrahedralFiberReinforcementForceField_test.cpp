@@ -15,6 +15,7 @@
 #include "plugins/TensorMass/TensorMassTestScenes.h"
 #include "simulation/ForceField.h"
 #include "support/ForceFieldTest.h"
+#include "support/TestNames.h"
 #include "topology/Topology.h"
 #include "topology/TopologyChange.h"
 
@@ -358,6 +359,7 @@ struct BadInput {
   const char* field;       // the field the error names
   const char* text;        // part of the error
 };
+void PrintTo(const BadInput& c, std::ostream* out) { *out << c.what; }
 
 const std::string kConstants = constantsText(kTissue);
 
@@ -415,12 +417,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"both kinds of parameters", kConstants + " alpha=\"100\"", "alpha", "not both"},
         BadInput{"Spencer without mu_T", "alpha=\"1\" beta=\"2\" shearModulusL=\"3\"",
                  "shearModulusT", "all four"}),
-    [](const auto& info) {
-      std::string name = info.param.what;
-      for (char& ch : name)
-        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-      return name;
-    });
+    NameFromWhat());
 
 }  // namespace
 }  // namespace stroma::test

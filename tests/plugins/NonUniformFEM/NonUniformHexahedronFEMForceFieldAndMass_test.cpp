@@ -207,7 +207,8 @@ TEST_P(RotatingNonUniform, PassesTheForceFieldTestWithinTheCorotationalBounds) {
 }
 
 INSTANTIATE_TEST_SUITE_P(NonUniformHexahedronFEMForceFieldAndMass, RotatingNonUniform,
-                         ::testing::Values("large", "polar"));
+                         ::testing::Values("large", "polar"),
+                         [](const auto& info) { return std::string(info.param); });
 
 TEST(NonUniformHexahedronFEMForceFieldAndMass, TotalMassIsDensityTimesFilledVolume) {
   // The condensation keeps the sum of the mass entries (the rows of L_c sum to 1), so the

@@ -20,6 +20,7 @@ struct SolverCase {
 std::string caseName(const testing::TestParamInfo<SolverCase>& info) {
   return info.param.className;
 }
+void PrintTo(const SolverCase& c, std::ostream* out) { *out << c.xml; }
 
 class EverySolver : public testing::TestWithParam<SolverCase> {};
 

@@ -14,6 +14,11 @@
 #include "core/ThreadPool.h"
 #include "linalg/AssembledMatrix.h"
 
+namespace stroma::fem {
+// GoogleTest prints the parameters of SharedHexahedra with it (found by argument lookup).
+void PrintTo(RotationMethod method, std::ostream* out) { *out << rotationMethodName(method); }
+}  // namespace stroma::fem
+
 namespace stroma::test {
 namespace {
 
@@ -182,7 +187,10 @@ TEST_P(SharedHexahedra, GiveTheForcesProductsMatrixAndEnergyOfUnsharedConstants)
 
 INSTANTIATE_TEST_SUITE_P(CorotationalElements, SharedHexahedra,
                          ::testing::Values(fem::RotationMethod::small, fem::RotationMethod::large,
-                                           fem::RotationMethod::polar, fem::RotationMethod::svd));
+                                           fem::RotationMethod::polar, fem::RotationMethod::svd),
+                         [](const auto& info) {
+                           return std::string(fem::rotationMethodName(info.param));
+                         });
 
 TEST(CorotationalElements, RemovedHexahedraKeepTheirSharedConstants) {
   const ThreadPool pool(1);

@@ -54,7 +54,8 @@ TEST_P(RotatingHexahedra, PassTheForceFieldTestWithinTheCorotationalBounds) {
 }
 
 INSTANTIATE_TEST_SUITE_P(HexahedronFEMForceField, RotatingHexahedra,
-                         ::testing::Values("large", "polar", "svd"));
+                         ::testing::Values("large", "polar", "svd"),
+                         [](const auto& info) { return std::string(info.param); });
 
 TEST(HexahedronFEMForceFieldAndMass, PassesTheForceFieldTest) {
   // Without gravity its force is the elastic one: the field under test is the mass.

@@ -27,6 +27,7 @@
 #include "SolidMechanics/kernels/TrilinearHexahedron.h"
 #include "linalg/AssembledMatrix.h"
 #include "plugins/TestPlugin/TestSupport.h"
+#include "support/TestNames.h"
 
 namespace stroma::test {
 namespace {
@@ -120,6 +121,11 @@ struct Case {
   const char* method;     // large or polar
   Vec3i cells;
 };
+std::string describe(const Case& c) {
+  return std::string(c.component) + " " + c.method + " " + std::to_string(c.cells.x()) + "x" +
+         std::to_string(c.cells.y()) + "x" + std::to_string(c.cells.z());
+}
+void PrintTo(const Case& c, std::ostream* out) { *out << describe(c); }
 
 std::string caseName(const Case& c) {
   return std::string(c.component) + " " + c.method + " " + std::to_string(c.cells.x()) + "^3";
@@ -207,7 +213,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"HexahedronFEMForceField", "large", Vec3i(3, 3, 3)},
                       Case{"HexahedronFEMForceField", "polar", Vec3i(3, 3, 3)},
                       Case{"HexahedronFEMForceFieldAndMass", "large", Vec3i(3, 3, 3)},
-                      Case{"HexahedronFEMForceFieldAndMass", "polar", Vec3i(3, 3, 3)}));
+                      Case{"HexahedronFEMForceFieldAndMass", "polar", Vec3i(3, 3, 3)}),
+    [](const auto& info) { return testName(describe(info.param)); });
 
 // --- Grids from scattered points -----------------------------------------------------------
 

@@ -76,6 +76,8 @@ TEST_P(RotatingMethods, TangentErrorIsFirstOrderInTheStrain) {
   EXPECT_NEAR(order, 1.0, 0.2) << coarse.describe() << fine.describe();
 }
 
+void PrintTo(const RotatingCase& c, std::ostream* out) { *out << "method " << c.method; }
+
 INSTANTIATE_TEST_SUITE_P(TetrahedronFEMForceField, RotatingMethods,
                          ::testing::Values(RotatingCase{"large", false},
                                            RotatingCase{"polar", true}, RotatingCase{"svd", true}),

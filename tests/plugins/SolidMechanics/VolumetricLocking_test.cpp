@@ -260,6 +260,9 @@ struct RotatingCase {
   const char* method;
   bool exactEnergy;  // f = -dE/dx exactly: tetrahedra with polar and svd (R^T F symmetric)
 };
+void PrintTo(const RotatingCase& c, std::ostream* out) {
+  *out << c.elements << ", method " << c.method;
+}
 
 class RotatingLockingFree : public ::testing::TestWithParam<RotatingCase> {};
 

@@ -11,6 +11,7 @@
 #include "TensorMassTestScenes.h"
 #include "simulation/ForceField.h"
 #include "support/ForceFieldTest.h"
+#include "support/TestNames.h"
 
 namespace stroma::test {
 namespace {
@@ -162,6 +163,7 @@ struct BadMaterial {
   const char* name;   // the field the error names
   const char* text;   // part of the error
 };
+void PrintTo(const BadMaterial& c, std::ostream* out) { *out << c.what; }
 
 class HyperelasticBadInput : public ::testing::TestWithParam<BadMaterial> {};
 
@@ -202,12 +204,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadMaterial{"StVK tensor-mass, zero Young's modulus",
                     "<TetrahedralStVKTensorMassForceField youngModulus=\"0\"/>", "youngModulus",
                     "> 0"}),
-    [](const auto& info) {
-      std::string name = info.param.what;
-      for (char& ch : name)
-        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-      return name;
-    });
+    NameFromWhat());
 
 }  // namespace
 }  // namespace stroma::test

@@ -11,6 +11,7 @@
 #include "TensorMassTestScenes.h"
 #include "simulation/ForceField.h"
 #include "support/ForceFieldTest.h"
+#include "support/TestNames.h"
 #include "topology/MeshAdjacency.h"
 
 namespace stroma::test {
@@ -171,6 +172,7 @@ struct BadInput {
   const char* field;       // the field the error names
   const char* text;        // part of the error
 };
+void PrintTo(const BadInput& c, std::ostream* out) { *out << c.what; }
 
 class TensorMassBadInput : public ::testing::TestWithParam<BadInput> {};
 
@@ -222,12 +224,7 @@ INSTANTIATE_TEST_SUITE_P(
                                false, false, "youngModulus", "> 0"},
                       BadInput{"flat tetrahedron", "", true, false, "topology", "flat"},
                       BadInput{"inverted tetrahedron", "", false, true, "topology", "inverted"}),
-    [](const auto& info) {
-      std::string name = info.param.what;
-      for (char& ch : name)
-        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-      return name;
-    });
+    NameFromWhat());
 
 }  // namespace
 }  // namespace stroma::test
