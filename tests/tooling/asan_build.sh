@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Configures and builds the sanitizer sub-build of asan/ (ASan + LSan + UBSan, libFuzzer
-# coverage) with clang and ccache. ctest runs it as the fixture tooling_asan_build before the
-# fuzz and leak tests; later runs are incremental (a few seconds).
+# coverage) with clang and ccache. prepare.sh runs it before ctest (scripts/test.sh); later runs
+# are incremental (a few seconds). Ninja's progress goes to BUILD_DIR/build.log, the errors to
+# stderr.
 # The CHOLMOD plugin is left out: libcholmod (with its BLAS/OpenMP) leaks a few bytes when it is
 # loaded, which LeakSanitizer reports against a library Stroma does not control.
 # Usage: asan_build.sh BUILD_DIR
@@ -30,4 +31,8 @@ mkdir -p "$build"
 }
 # The plugin-index step of each plugin runs the sanitized stroma, leak check included.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
-"$cmake" --build "$build"
+"$cmake" --build "$build" >"$build/build.log" 2>&1 || {
+  grep -v '^\[[0-9]*/[0-9]*\] ' "$build/build.log" | tail -n 60 >&2
+  echo "asan_build: the sanitizer sub-build failed; full log: $build/build.log" >&2
+  exit 1
+}

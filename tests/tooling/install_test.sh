@@ -1,17 +1,20 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# Install test: installs the main build into a fresh prefix, builds the out-of-tree plugins of
-# external_plugin/ and examples/ForceFieldPlugin against it with find_package(Stroma), then
-# checks that the INSTALLED stroma
-# lists and runs the plugin's component (found through STROMA_PLUGIN_PATH) and finds its own
-# built-in plugins and libraries in the install prefix, not in the build tree, and that the
-# example force field reaches its analytic static equilibrium.
+# Install test, in two phases:
+#   prepare: installs the main build into a fresh prefix and builds the out-of-tree plugins of
+#            external_plugin/ and examples/ForceFieldPlugin against it with find_package(Stroma)
+#            (a build step: tests/tooling/prepare.sh runs it before ctest, with no time limit);
+#   check:   (the ctest tooling_install) checks that the INSTALLED stroma lists and runs the
+#            plugin's component (found through STROMA_PLUGIN_PATH) and finds its own built-in
+#            plugins and libraries in the install prefix, not in the build tree, and that the
+#            example force field reaches its analytic static equilibrium.
 #
-# Usage: install_test.sh MAIN_BUILD_DIR WORK_DIR   (ctest passes both; WORK_DIR is wiped)
+# Usage: install_test.sh prepare|check MAIN_BUILD_DIR WORK_DIR   (prepare wipes WORK_DIR)
 set -euo pipefail
 
-build_dir=$(cd "$1" && pwd)
-work=$2
+phase=$1
+build_dir=$(cd "$2" && pwd)
+work=$3
 here=$(cd "$(dirname "$0")" && pwd)
 cmake=${CMAKE_COMMAND:-cmake}
 
@@ -39,26 +42,39 @@ expect_output() {
   }
 }
 
-rm -rf "$work"
-mkdir -p "$work"
 prefix=$work/install
 unset STROMA_PLUGIN_PATH STROMA_DATA_PATH
+example=$(cd "$here/../../examples/ForceFieldPlugin" && pwd)
 
-# 1. Install.
-expect install 0 "$cmake" --install "$build_dir" --prefix "$prefix"
+if [ "$phase" = prepare ]; then
+  rm -rf "$work"
+  mkdir -p "$work"
+  # 1. Install.
+  expect install 0 "$cmake" --install "$build_dir" --prefix "$prefix"
+  # 2. Build the external plugin and the example against the install only.
+  launcher=()
+  command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  generator=()
+  command -v ninja >/dev/null && generator=(-G Ninja)
+  expect configure 0 "$cmake" -S "$here/external_plugin" -B "$work/external" "${generator[@]}" \
+    -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
+    "${launcher[@]}"
+  expect build 0 "$cmake" --build "$work/external"
+  expect configure_example 0 "$cmake" -S "$example" -B "$work/example" "${generator[@]}" \
+    -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" "${launcher[@]}"
+  expect build_example 0 "$cmake" --build "$work/example"
+  echo "install_test: prepared (prefix $prefix)"
+  exit 0
+fi
+[ "$phase" = check ] || fail "usage: install_test.sh prepare|check MAIN_BUILD_DIR WORK_DIR"
+[ -d "$work/external" ] && [ -d "$work/example" ] ||
+  fail "nothing prepared in $work: tests/tooling/prepare.sh $build_dir runs the install and" \
+    "builds the out-of-tree plugins (scripts/test.sh runs it before ctest)"
+
+# 1-2. What the install and the out-of-tree builds left.
 [ -x "$prefix/bin/stroma" ] || fail "no bin/stroma in the install"
 [ -f "$prefix/lib/cmake/Stroma/StromaConfig.cmake" ] || fail "no package config in the install"
 ls "$prefix"/lib/stroma/plugins/*.stroma-plugin >/dev/null 2>&1 || fail "no installed plugin index"
-
-# 2. Build the external plugin against the install only.
-launcher=()
-command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-generator=()
-command -v ninja >/dev/null && generator=(-G Ninja)
-expect configure 0 "$cmake" -S "$here/external_plugin" -B "$work/external" "${generator[@]}" \
-  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
-  "${launcher[@]}"
-expect build 0 "$cmake" --build "$work/external"
 # The plugin compiles with the framework's -march (Eigen's alignment is part of the plugin ABI).
 march=$(grep -o -m1 -- '-march=[^ "]*' "$build_dir/compile_commands.json" || true)
 if [ -n "$march" ] && ! grep -q -- "$march" "$work/external/compile_commands.json"; then
@@ -111,10 +127,6 @@ expect check_default 0 "$stroma" check "$prefix/share/stroma/scenes/organ/Organ.
 
 # 7. The example third-party force field (examples/ForceFieldPlugin), built the same way, gives
 # the static equilibrium of its scene: u + 2 u^3 = F, u = 1 m for 3 N and u = 2 m for 18 N.
-example=$(cd "$here/../../examples/ForceFieldPlugin" && pwd)
-expect configure_example 0 "$cmake" -S "$example" -B "$work/example" "${generator[@]}" \
-  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" "${launcher[@]}"
-expect build_example 0 "$cmake" --build "$work/example"
 expect run_example 0 env STROMA_PLUGIN_PATH="$work/example/plugins" "$stroma" run \
   "$example/HardeningAnchor.scn" -n 1 --export-state "$work/example.state"
 awk '
