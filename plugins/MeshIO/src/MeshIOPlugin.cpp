@@ -3,6 +3,7 @@
 #include "MeshOBJLoader.h"
 #include "MeshSTLLoader.h"
 #include "MeshVTKLoader.h"
+#include "SphereLoader.h"
 #include "core/Plugin.h"
 
 namespace {
@@ -18,12 +19,15 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .alias("MeshObjLoader");
   registry.add("MeshSTLLoader", "Reads an STL surface mesh (ASCII or binary)")
       .with<MeshSTLLoader>();
+  registry.add("SphereLoader", "Reads a sphere file (.sph): centers and radii of spheres")
+      .with<SphereLoader>();
 }
 
 }  // namespace
 
 extern "C" STROMA_PLUGIN_EXPORT const stroma::PluginEntry* stroma_plugin_entry() {
   static const stroma::PluginEntry entry = stroma::makePluginEntry(
-      "MeshIO", "0.1.0", "Mesh file loaders (Gmsh, VTK, OBJ, STL)", registerComponents);
+      "MeshIO", "0.1.0", "Mesh file loaders (Gmsh, VTK, OBJ, STL) and sphere files (.sph)",
+      registerComponents);
   return &entry;
 }

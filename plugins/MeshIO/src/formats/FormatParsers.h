@@ -19,6 +19,10 @@ bool parseObj(std::string_view bytes, const MeshParseOptions& options, MeshData&
 bool parseStl(std::string_view bytes, const MeshParseOptions& options, MeshData& mesh,
               std::string& error);
 
+/// Reads a whole file (an empty one too). On failure sets `error`: "no such file", "not a
+/// regular file", "cannot open the file" or "cannot read the file".
+bool readFileBytes(const std::string& path, std::string& bytes, std::string& error);
+
 /// How many items of at least `minBytes` bytes each `bytes` can hold: the cap on what a count
 /// read from the file may reserve.
 inline std::size_t maxItems(std::string_view bytes, std::size_t minBytes) {

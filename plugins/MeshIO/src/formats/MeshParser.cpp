@@ -22,6 +22,28 @@ void addPolygon(MeshData& mesh, const Index* v, std::size_t count, bool triangul
   }
 }
 
+bool readFileBytes(const std::string& path, std::string& bytes, std::string& error) {
+  bytes.clear();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    error = std::filesystem::exists(path, ec) ? "not a regular file" : "no such file";
+    return false;
+  }
+  std::ifstream file(path, std::ios::binary);
+  if (!file) {
+    error = "cannot open the file";
+    return false;
+  }
+  std::ostringstream content;
+  content << file.rdbuf();
+  if (file.bad()) {
+    error = "cannot read the file";
+    return false;
+  }
+  bytes = std::move(content).str();
+  return true;
+}
+
 }  // namespace meshio
 
 const char* meshFormatName(MeshFormat format) {
@@ -82,23 +104,8 @@ bool parseMesh(std::string_view bytes, MeshFormat format, MeshData& mesh, std::s
 
 bool readMeshFile(const std::string& path, MeshFormat format, MeshData& mesh, std::string& error,
                   const MeshParseOptions& options) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    error = std::filesystem::exists(path, ec) ? "not a regular file" : "no such file";
-    return false;
-  }
-  std::ifstream file(path, std::ios::binary);
-  if (!file) {
-    error = "cannot open the file";
-    return false;
-  }
-  std::ostringstream content;
-  content << file.rdbuf();
-  if (file.bad()) {
-    error = "cannot read the file";
-    return false;
-  }
-  const std::string bytes = std::move(content).str();
+  std::string bytes;
+  if (!meshio::readFileBytes(path, bytes, error)) return false;
   if (bytes.empty()) {
     error = "the file is empty";
     return false;
