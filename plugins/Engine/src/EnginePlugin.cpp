@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "BoxROI.h"
+#include "GenerateRigidMass.h"
 #include "core/Plugin.h"
 
 namespace {
@@ -10,12 +11,18 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .with<BoxROI<Vec3Types>>("Vec3d")
       .with<BoxROI<Vec2Types>>("Vec2d")
       .with<BoxROI<Vec1Types>>("Vec1d");
+  registry
+      .add(
+          "GenerateRigidMass",
+          "Mass, center and inertia of a homogeneous solid from its closed surface (a data engine)")
+      .with<GenerateRigidMass>("Rigid3d");
 }
 
 }  // namespace
 
 extern "C" STROMA_PLUGIN_EXPORT const stroma::PluginEntry* stroma_plugin_entry() {
   static const stroma::PluginEntry entry = stroma::makePluginEntry(
-      "Engine", "0.1.0", "Data engines: regions of interest", registerComponents);
+      "Engine", "0.1.0", "Data engines: regions of interest, rigid masses of closed surfaces",
+      registerComponents);
   return &entry;
 }
