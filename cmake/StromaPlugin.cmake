@@ -41,3 +41,29 @@ function(stroma_add_plugin name)
     install(FILES ${outdir}/${name}.stroma-plugin DESTINATION ${STROMA_PLUGIN_INSTALL_DIR})
   endif()
 endfunction()
+
+# stroma_add_unavailable_plugin(<Name> REASON <text> COMPONENTS_FILE <file>)
+#
+# A plugin this build leaves out because a library it needs is missing: writes its index with an
+# `unavailable` line (REASON: what is missing and what to install) and the components listed in
+# COMPONENTS_FILE (one per line, '#' comments), so that a scene using one of them is told why
+# it cannot be created instead of hearing of an unknown component.
+function(stroma_add_unavailable_plugin name)
+  cmake_parse_arguments(ARG "" "REASON;COMPONENTS_FILE" "" ${ARGN})
+  set(outdir ${STROMA_PLUGIN_OUTPUT_DIR})
+  file(STRINGS ${ARG_COMPONENTS_FILE} lines)
+  set(text "# Stroma plugin index, written at configure time: this build left the plugin out.\n")
+  string(APPEND text "plugin ${name}\nunavailable ${ARG_REASON}\n")
+  foreach(line IN LISTS lines)
+    string(STRIP "${line}" line)
+    if(line AND NOT line MATCHES "^#")
+      string(APPEND text "component ${line}\n")
+    endif()
+  endforeach()
+  file(WRITE ${outdir}/${name}.stroma-plugin "${text}")
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${ARG_COMPONENTS_FILE})
+  if(DEFINED STROMA_PLUGIN_INSTALL_DIR)
+    install(FILES ${outdir}/${name}.stroma-plugin DESTINATION ${STROMA_PLUGIN_INSTALL_DIR})
+  endif()
+  message(STATUS "Plugin ${name} left out: ${ARG_REASON}")
+endfunction()

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `stroma list`, `stroma doc` and `stroma plugin-index`: what the plugins provide.
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -23,7 +24,11 @@ int listCommand(const std::vector<std::string>& args) {
   std::map<std::string, std::vector<const ComponentClass*>> byPlugin;
   for (const ComponentClass* c : runtime.factory().classes()) byPlugin[c->plugin].push_back(c);
   const std::string* only = a.value("--plugin");
-  if (only && !byPlugin.count(*only)) {
+  const auto& index = runtime.plugins().available();
+  const bool leftOut = only && std::any_of(index.begin(), index.end(), [&](const auto& e) {
+                         return e.name == *only && !e.unavailable.empty();
+                       });
+  if (only && !byPlugin.count(*only) && !leftOut) {
     std::vector<std::string> names;
     for (const auto& [plugin, classes] : byPlugin) names.push_back(plugin);
     std::string text = "no plugin named '" + *only + "'";
@@ -51,6 +56,12 @@ int listCommand(const std::vector<std::string>& args) {
       }
       std::cout << ": " << c->description << '\n';
     }
+  }
+  // Plugins this build left out (a library they need was missing): their components by name.
+  for (const PluginIndexEntry& entry : runtime.plugins().available()) {
+    if (entry.unavailable.empty() || (only && entry.name != *only)) continue;
+    std::cout << entry.name << " (left out of this build: " << entry.unavailable << ")\n";
+    for (const std::string& component : entry.components) std::cout << "  " << component << '\n';
   }
   if (!allLoaded) {
     std::cerr << "stroma: some plugins failed to load:\n" << loadErrors << '\n';
@@ -106,6 +117,7 @@ int docCommand(const std::vector<std::string>& args) {
       std::cout << ", range [" << lo << ", " << hi << "]";
     }
     if (o.output) std::cout << ", output";
+    if (o.alias) std::cout << ", also '" << o.alias << "'";
     std::cout << ")\n      " << d->help() << "\n      default: ";
     const std::string def = d->defaultText();
     std::cout << (def.empty() ? "(empty)" : def) << '\n';

@@ -42,6 +42,8 @@ std::string Base::path() const {
 BaseData* Base::findData(std::string_view name) const {
   for (BaseData* d : m_data)
     if (d->name() == name) return d;
+  for (BaseData* d : m_data)
+    if (d->options().alias && name == d->options().alias) return d;
   return nullptr;
 }
 

@@ -37,6 +37,9 @@ struct DataOptions {
   /// False for a source's settings that `src="@source"` must not copy (a loader's translation
   /// or filename: the follower would apply them a second time), as SOFA's setAutoLink(false).
   bool autoLink = true;
+  /// Another name the scene may give it (SOFA's older name, as its addAlias): found by
+  /// Base::findData, shown by `stroma doc`.
+  const char* alias = nullptr;
 };
 
 namespace internal {

@@ -34,13 +34,16 @@ bool readPluginIndex(const fs::path& file, PluginIndexEntry& entry, std::string&
     else if (key == "version") entry.version = value;
     else if (key == "description") entry.description = value;
     else if (key == "component") entry.components.push_back(value);
+    else if (key == "unavailable")
+      entry.unavailable = value;
     else {
       error = file.string() + ":" + std::to_string(lineNumber) + ": unknown key '" + key + "'";
       return false;
     }
   }
-  if (entry.name.empty() || entry.library.empty()) {
-    error = file.string() + ": a plugin index needs 'plugin' and 'library' lines";
+  if (entry.name.empty() || (entry.library.empty() && entry.unavailable.empty())) {
+    error =
+        file.string() + ": a plugin index needs 'plugin' and 'library' (or 'unavailable') lines";
     return false;
   }
   return true;
@@ -198,8 +201,14 @@ bool PluginManager::load(std::string_view nameOrPath, std::string& error) {
     return loadLibrary(asPath, error);
   }
   scanIfNeeded();
-  for (const auto& entry : m_index)
-    if (entry.name == nameOrPath) return loadLibrary(entry.library, error);
+  for (const auto& entry : m_index) {
+    if (entry.name != nameOrPath) continue;
+    if (!entry.unavailable.empty()) {
+      error = "this build left plugin " + entry.name + " out: " + entry.unavailable;
+      return false;
+    }
+    return loadLibrary(entry.library, error);
+  }
   error = "no plugin named '" + std::string(nameOrPath) + "' in the plugin search path (";
   for (std::size_t i = 0; i < m_searchPath.size(); ++i) {
     if (i) error += ':';
@@ -215,6 +224,7 @@ bool PluginManager::loadAll(std::string& error) {
   bool ok = true;
   for (const auto& entry : m_index) {
     std::string one;
+    if (!entry.unavailable.empty()) continue;  // left out of this build: nothing to load
     if (!isLoaded(entry.name) && !loadLibrary(entry.library, one)) {
       if (!error.empty()) error += '\n';
       error += one;

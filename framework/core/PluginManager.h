@@ -19,6 +19,9 @@ struct PluginIndexEntry {
   std::string version;
   std::string description;
   std::vector<std::string> components;  ///< class names and aliases
+  /// Why this build left the plugin out (a library it needs was missing), with what to
+  /// install; empty when it was built. Its components are then known but cannot be created.
+  std::string unavailable;
 };
 
 /// Reads an index file. Returns false with `error` on a malformed file.

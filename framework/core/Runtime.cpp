@@ -26,6 +26,11 @@ std::unique_ptr<Base> Runtime::create(std::string_view className, std::string_vi
     if (const PluginIndexEntry* provider = m_plugins.providerOf(className)) {
       const std::string pluginName = provider->name;
       std::string loadError;
+      if (!provider->unavailable.empty()) {
+        error = "component '" + std::string(className) + "' is in plugin " + pluginName +
+                ", which this build left out: " + provider->unavailable;
+        return nullptr;
+      }
       if (!m_plugins.load(pluginName, loadError)) {
         error = "component '" + std::string(className) + "' is in plugin " + pluginName +
                 ", which failed to load: " + loadError;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "simulation/AnimationLoop.h"
 
+#include "collision/CollisionPipeline.h"
 #include "core/Node.h"
 #include "simulation/MechanicalOperations.h"
 #include "simulation/Solvers.h"
@@ -55,6 +56,11 @@ void animateDefault(Node& root, double dt, Timing& timing) {
     ScopedPhase phase(timing, "behaviorModels");
     BehaviorUpdateVisitor visitor(dt);
     traverse(root, visitor);
+  }
+  // Only scenes with a collision pipeline have a collision step (DESIGN.md sections 3 and 4).
+  if (CollisionPhase* collision = root.get<CollisionPhase>(); collision && collision->isValid()) {
+    ScopedPhase phase(timing, "collision");
+    collision->computeCollisions(root, timing);
   }
   {
     ScopedPhase phase(timing, "solve");

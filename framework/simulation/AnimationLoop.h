@@ -28,7 +28,8 @@ class BehaviorModel : public Base {
 namespace stroma {
 
 /// The step of a scene without an animation loop component, and of DefaultAnimationLoop:
-/// behavior models, then time += dt.
+/// behavior models, collision (when the root holds a collision pipeline), the solvers, then
+/// time += dt.
 void animateDefault(Node& root, double dt, Timing& timing);
 
 }  // namespace stroma

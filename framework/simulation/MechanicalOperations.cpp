@@ -18,6 +18,7 @@ namespace stroma {
 MechanicalOperations::MechanicalOperations(Node& solverNode, Timing& timing, double dt)
     : m_node(solverNode), m_timing(timing), m_dt(dt) {
   collect(solverNode, true);
+  collectInteractions();
   for (BaseMechanicalState* s : m_states) {
     const bool mapped = std::any_of(m_mappings.begin(), m_mappings.end(),
                                     [&](const BaseMapping* m) { return m->toState() == s; });
@@ -55,8 +56,28 @@ void MechanicalOperations::collectLoadedMappings() {
 }
 
 MechanicalOperations::~MechanicalOperations() {
-  for (VecId v : m_temporaries)
+  for (VecId v : m_temporaries) {
     for (BaseMechanicalState* s : m_states) s->vFree(v);
+    for (BaseMechanicalState* s : m_foreign) s->vFree(v);
+  }
+}
+
+void MechanicalOperations::collectInteractions() {
+  auto isOurs = [&](const BaseMechanicalState* s) {
+    return std::find(m_states.begin(), m_states.end(), s) != m_states.end();
+  };
+  // Force fields of the ancestors that act on one of this solver's states.
+  for (Node* n = m_node.parent(); n; n = n->parent())
+    for (const auto& object : n->objects()) {
+      auto* ff = dynamic_cast<BaseForceField*>(object.get());
+      if (!ff || !ff->isValid()) continue;
+      const auto states = ff->states();
+      if (std::any_of(states.begin(), states.end(), isOurs)) m_forceFields.push_back(ff);
+    }
+  for (const BaseForceField* ff : m_forceFields)
+    for (BaseMechanicalState* s : ff->states())
+      if (s && !isOurs(s) && std::find(m_foreign.begin(), m_foreign.end(), s) == m_foreign.end())
+        m_foreign.push_back(s);
 }
 
 // The subtree of the solver node, minus sub-nodes that have their own ODE solver.
@@ -81,6 +102,7 @@ double MechanicalOperations::time() const { return m_node.time(); }
 VecId MechanicalOperations::allocDeriv() {
   const VecId v = VecId::deriv(m_nextDeriv++);
   for (BaseMechanicalState* s : m_states) s->vAlloc(v);
+  for (BaseMechanicalState* s : m_foreign) s->vAlloc(v);
   m_temporaries.push_back(v);
   return v;
 }
@@ -88,12 +110,14 @@ VecId MechanicalOperations::allocDeriv() {
 VecId MechanicalOperations::allocCoord() {
   const VecId v = VecId::coord(m_nextCoord++);
   for (BaseMechanicalState* s : m_states) s->vAlloc(v);
+  for (BaseMechanicalState* s : m_foreign) s->vAlloc(v);
   m_temporaries.push_back(v);
   return v;
 }
 
 void MechanicalOperations::freeVec(VecId v) {
   for (BaseMechanicalState* s : m_states) s->vFree(v);
+  for (BaseMechanicalState* s : m_foreign) s->vFree(v);
   m_temporaries.erase(std::remove(m_temporaries.begin(), m_temporaries.end(), v),
                       m_temporaries.end());
 }

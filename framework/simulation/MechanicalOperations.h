@@ -27,6 +27,13 @@ class Timing;
 /// work for any mix of states, force fields, masses, constraints and mappings.
 ///
 /// "Independent" states are those no mechanical mapping outputs; they are the unknowns.
+///
+/// Interaction force fields may act on a state of this solver and one outside it: a spring to
+/// another body, or a contact response, which the collision pipeline puts in the nearest common
+/// ancestor of the two models' nodes (so it is collected from this solver's ancestors too). The
+/// states outside are "foreign": this solver's temporary vectors exist on them, zeroed, so
+/// that their increments read as zero (they are held fixed during this solve), and they are
+/// never integrated.
 class MechanicalOperations {
  public:
   /// `dt`: the duration of the step being solved (0 when unknown); the constraints impose
@@ -109,6 +116,7 @@ class MechanicalOperations {
 
  private:
   void collect(Node& node, bool isSolverNode);
+  void collectInteractions();
   void collectLoadedMappings();
   void clearOnAll(VecId v);
   Eigen::SparseMatrix<double> totalJacobian(const BaseMechanicalState* state);
@@ -118,6 +126,7 @@ class MechanicalOperations {
   double m_dt = 0;
   std::vector<BaseMechanicalState*> m_states;       // all, top-down
   std::vector<BaseMechanicalState*> m_independent;  // not outputs of a mechanical mapping
+  std::vector<BaseMechanicalState*> m_foreign;      // acted on by its force fields, not its own
   std::vector<BaseForceField*> m_forceFields;       // masses included
   std::vector<BaseMass*> m_masses;
   std::vector<BaseProjectiveConstraint*> m_constraints;

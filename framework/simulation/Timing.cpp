@@ -3,7 +3,7 @@
 
 namespace stroma {
 
-void Timing::add(const std::string& phase, double seconds) {
+void Timing::add(std::string_view phase, double seconds) {
   for (auto& p : m_phases) {
     if (p.name == phase) {
       p.seconds += seconds;
@@ -11,7 +11,7 @@ void Timing::add(const std::string& phase, double seconds) {
       return;
     }
   }
-  m_phases.push_back({phase, seconds, 1});
+  m_phases.push_back({std::string(phase), seconds, 1});
 }
 
 double Timing::seconds(const std::string& phase) const {

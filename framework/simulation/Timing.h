@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace stroma {
@@ -16,7 +17,8 @@ class Timing {
     double seconds = 0;
     long long calls = 0;
   };
-  void add(const std::string& phase, double seconds);
+  /// Adds to `phase`; allocates only for a phase it has not seen yet.
+  void add(std::string_view phase, double seconds);
   const std::vector<Phase>& phases() const { return m_phases; }
   double seconds(const std::string& phase) const;
   void clear() { m_phases.clear(); }
@@ -28,8 +30,10 @@ class Timing {
 /// Adds the time between its construction and destruction to a phase.
 class ScopedPhase {
  public:
-  ScopedPhase(Timing& timing, std::string phase)
-      : m_timing(timing), m_phase(std::move(phase)), m_start(std::chrono::steady_clock::now()) {}
+  /// `phase` must outlive the ScopedPhase (phases are named by string literals): nothing is
+  /// copied, so that timing a step allocates nothing.
+  ScopedPhase(Timing& timing, std::string_view phase)
+      : m_timing(timing), m_phase(phase), m_start(std::chrono::steady_clock::now()) {}
   ~ScopedPhase() {
     m_timing.add(m_phase, std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start)
                               .count());
@@ -39,7 +43,7 @@ class ScopedPhase {
 
  private:
   Timing& m_timing;
-  std::string m_phase;
+  std::string_view m_phase;
   std::chrono::steady_clock::time_point m_start;
 };
 
