@@ -12,6 +12,7 @@ packages=(
   zlib1g-dev   # gzip/zlib-compressed NRRD and MetaImage volume images (SparseGrid)
   gnuplot-nox   # PNG plots of error against run time (framework/report/Chart)
   libmetis-dev   # automatic mesh partitions of the hybrid model (DomainDecomposition)
+  libbullet-dev  # dynamic AABB trees of collision detection (Collision)
   calculix-ccx   # independent FE reference runs (share/reference/calculix/cantilever_ccx.py)
   clang libclang-rt-14-dev   # libFuzzer and LeakSanitizer for the fuzz and leak tests
 )

@@ -611,7 +611,7 @@ TEST(StromaCommand, DocOfAnUnknownComponentFailsWithASuggestion) {
   EXPECT_EQ(r.exitCode, 2) << show(r);
   EXPECT_TRUE(has(r.err, "unknown component 'MechanicalObjct'; did you mean 'MechanicalObject'?"))
       << show(r);
-  r = runStroma({"doc", "TriangleCollisionModel"});
+  r = runStroma({"doc", "FreeMotionAnimationLoop"});
   EXPECT_EQ(r.exitCode, 2) << show(r);
   EXPECT_TRUE(has(r.err, "is a SOFA component that Stroma does not provide")) << show(r);
 }

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "core/StateTypes.h"
+#include "simulation/ForceField.h"
+#include "simulation/RunSummary.h"
+
+namespace stroma {
+
+/// One penalty contact: a point on a primitive of each state (weights of its vertices), the
+/// normal from the first to the second, the gap to keep and the stiffness.
+struct PenaltyContact {
+  std::array<std::uint32_t, 3> vertices[2] = {{0, 0, 0}, {0, 0, 0}};
+  int vertexCount[2] = {1, 1};
+  Vec3d weights[2] = {Vec3d(1, 0, 0), Vec3d(1, 0, 0)};
+  Vec3d normal = Vec3d::UnitZ();
+  /// The gap the response keeps between the two weighted points along the normal: the
+  /// intersection's contactDistance, both models' contactDistance and the spheres' radii.
+  double restDistance = 0;
+  double stiffness = 0;
+};
+
+/// Penalty response of the contacts between two collision models (SOFA's
+/// PenalityContactForceField, created by CollisionResponse). With x_s = sum_k w_s,k x_s,k the
+/// contact point of side s on its primitive (a sphere's centre), the normal n fixed at detection
+/// and the penetration
+///   p = restDistance - n.(x_2 - x_1),
+/// a contact with p > 0 pushes the sides apart with the force k p along -n on side 1 and +n on
+/// side 2, spread on the vertices by their weights; its energy is k p^2 / 2 and its stiffness
+///   df_1,a / dx_1,b = -k w_1,a w_1,b n n^T,  df_1,a / dx_2,b = k w_1,a w_2,b n n^T,  ...
+/// (exact for a fixed normal: the rotation of n with the surfaces is left out, as in SOFA). A
+/// contact with p <= 0 does nothing. On a Rigid3d side (spheres on frames) the force acts on the
+/// frame's origin: the normal goes through the sphere's centre, so it has no torque.
+///
+/// A state of another solver (or of none, a fixed obstacle) is held fixed by each solve
+/// (MechanicalOperations' foreign states): its blocks only enter the system that owns it.
+template <class DataTypes1, class DataTypes2>
+class PenalityContactForceField final : public BaseForceField, public RunSummaryProvider {
+ public:
+  using State1 = MechanicalState<DataTypes1>;
+  using State2 = MechanicalState<DataTypes2>;
+
+  PenalityContactForceField(State1* state1, State2* state2) : m_state1(state1), m_state2(state2) {}
+
+  /// This step's contacts (the vector keeps its capacity: no allocation once warm).
+  std::vector<PenaltyContact>& contacts() { return m_contacts; }
+  const std::vector<PenaltyContact>& contacts() const { return m_contacts; }
+
+  /// The total force on side 2 at the last accumulateForce (minus that on side 1), and the
+  /// contacts that pushed then.
+  const Vec3d& lastForce() const { return m_lastForce; }
+  int activeContacts() const { return m_active; }
+
+  /// `stroma run`'s last lines: the contacts and the force at the end, the largest force.
+  std::vector<std::string> runSummaryLines() const override;
+
+  void accumulateForce(const MechanicalParams& mp, VecId f) override;
+  void accumulateDForce(const MechanicalParams& mp, VecId df, VecId dx) override;
+  void accumulateKMatrix(const MechanicalParams& mp, MatrixAccumulator& matrix,
+                         const StateOffsets& offsets) override;
+  double energy(const MechanicalParams& mp) const override;
+  std::vector<BaseMechanicalState*> states() const override { return {m_state1, m_state2}; }
+
+ private:
+  double penetration(const PenaltyContact& c, const std::vector<typename DataTypes1::Coord>& x1,
+                     const std::vector<typename DataTypes2::Coord>& x2) const;
+
+  State1* m_state1;
+  State2* m_state2;
+  std::vector<PenaltyContact> m_contacts;
+  Vec3d m_lastForce = Vec3d::Zero();
+  int m_active = 0;
+  double m_largestForce = 0, m_largestForceTime = 0;
+};
+
+}  // namespace stroma
