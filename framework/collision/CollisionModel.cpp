@@ -15,6 +15,8 @@ const char* primitiveKindName(PrimitiveKind kind) {
       return "triangle";
     case PrimitiveKind::sphere:
       return "sphere";
+    case PrimitiveKind::box:
+      return "box";
   }
   return "primitive";
 }
@@ -28,6 +30,8 @@ std::size_t CollisionGeometry::primitiveCount() const {
     case PrimitiveKind::point:
     case PrimitiveKind::sphere:
       return points.size();
+    case PrimitiveKind::box:
+      return boxes.size();
   }
   return 0;
 }
@@ -62,6 +66,15 @@ void CollisionModel::computeBoxes(std::vector<Aabb>& boxes, double margin) const
         const auto& t = g.triangles[i];
         const Vec3d &a = g.points[t[0]], &b = g.points[t[1]], &c = g.points[t[2]];
         boxes[i] = {a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c)};
+        boxes[i].expand(extra);
+      }
+      break;
+    case PrimitiveKind::box:
+      for (std::size_t i = 0; i < boxes.size(); ++i) {
+        // The half widths of an oriented box along the world axes: |R| h.
+        const OrientedBox& b = g.boxes[i];
+        const Vec3d halfWidths = b.rotation.cwiseAbs() * b.halfExtents;
+        boxes[i] = {b.center - halfWidths, b.center + halfWidths};
         boxes[i].expand(extra);
       }
       break;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Collision models: the surfaces (points, segments, triangles, spheres) that detection tests
-// against each other. A model sits in a node beside the mechanical state whose points it uses
-// (a Vec3d surface mapped from a body, or Rigid3d frames for spheres); the models, broad and
+// Collision models: the surfaces (points, segments, triangles, spheres, oriented boxes) that
+// detection tests against each other. A model sits in a node beside the mechanical state whose
+// points it uses (a Vec3d surface mapped from a body, or Rigid3d frames for spheres and boxes);
+// the models, broad and
 // narrow phases, intersection methods and responses live in plugins (plugins/Collision).
 //
 // Each step the pipeline asks every active model to updateGeometry(), then reads its
@@ -25,20 +26,30 @@ namespace stroma {
 class BaseMechanicalState;
 
 /// What the primitives of a model are.
-enum class PrimitiveKind { point, line, triangle, sphere };
+enum class PrimitiveKind { point, line, triangle, sphere, box };
 
 const char* primitiveKindName(PrimitiveKind kind);
 
+/// A box turned with a rigid frame: the points center + rotation * u with |u_k| <= halfExtents_k
+/// (world coordinates; the columns of `rotation` are the box's axes in the world).
+struct OrientedBox {
+  Vec3d center = Vec3d::Zero();
+  Mat3d rotation = Mat3d::Identity();
+  Vec3d halfExtents = Vec3d::Ones();
+};
+
 /// A model's primitives at the current step, world coordinates. Only the spans of the model's
-/// kind are filled: `points` always (every vertex, or the sphere centers); `edges` for lines;
-/// `triangles` for triangles; `radii` for spheres (one per sphere, or a single one for all).
-/// Indices in edges and triangles are into `points`.
+/// kind are filled: `points` always (every vertex, the sphere centers, or the box centers);
+/// `edges` for lines; `triangles` for triangles; `radii` for spheres (one per sphere, or a single
+/// one for all); `boxes` for boxes (one per frame). Indices in edges and triangles are into
+/// `points`.
 struct CollisionGeometry {
   PrimitiveKind kind = PrimitiveKind::point;
   std::span<const Vec3d> points;
   std::span<const std::array<std::uint32_t, 2>> edges;
   std::span<const std::array<std::uint32_t, 3>> triangles;
   std::span<const double> radii;
+  std::span<const OrientedBox> boxes;
   /// Triangle models: each triangle's unit normal (right-hand rule), for the side of a contact.
   std::span<const Vec3d> triangleNormals;
   /// Triangle models: which of its vertices and edges a triangle owns, so that a contact on a
@@ -50,10 +61,18 @@ struct CollisionGeometry {
   /// is left to it, and the triangle keeps only the contacts inside it.
   bool edgesElsewhere = false;
   bool verticesElsewhere = false;
-  /// The surface around each primitive, for LocalMinDistance, as lists in CSR form (the
-  /// entries of primitive i are neighbors[neighborOffsets[i] .. neighborOffsets[i + 1]]):
-  /// point models: the points joined to each point by an edge of the node's topology; line
-  /// models: the third vertex of each triangle around each edge. Empty without a topology.
+  /// Triangle models: for each triangle and each of its edges k (vertices k, k + 1), the third
+  /// vertex of the other triangle on that edge, or kNoVertex on a border. A contact on an edge
+  /// is kept only where the edge is the closest part of the surface (the other triangle's
+  /// interior is not closer).
+  std::span<const std::uint32_t> triangleEdgeNeighbors;
+  static constexpr std::uint32_t kNoVertex = ~std::uint32_t{0};
+  /// The surface around each primitive, as lists in CSR form (the entries of primitive i are
+  /// neighbors[neighborOffsets[i] .. neighborOffsets[i + 1]]): point models: the points joined
+  /// to each point by an edge of the node's topology (LocalMinDistance); line models: the third
+  /// vertex of each triangle around each edge (LocalMinDistance); triangle models: the points
+  /// joined to each point by an edge of the triangles (a contact on a vertex is kept only where
+  /// the vertex is the closest part of the surface). Empty without a topology.
   std::span<const std::uint32_t> neighborOffsets;
   std::span<const std::uint32_t> neighbors;
 
@@ -119,7 +138,8 @@ class CollisionModel : public Base {
   const CollisionGeometry& geometry() const { return m_geometry; }
 
   /// The box of each primitive at the current geometry, enlarged by `margin` + the model's
-  /// contactDistance (+ radius for spheres); `boxes` is resized.
+  /// contactDistance (+ radius for spheres; an oriented box gives the axis-aligned box around
+  /// its 8 corners); `boxes` is resized.
   void computeBoxes(std::vector<Aabb>& boxes, double margin) const;
 
   /// Whether detection tests this model against `other` (or itself, `other` == this):

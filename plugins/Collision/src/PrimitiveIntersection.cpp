@@ -104,16 +104,33 @@ int featureBit(const Vec3d& barycentric) {
   return one;                                 // a vertex
 }
 
-// Whether the triangle reports a contact at a point with these barycentric coordinates: inside
-// it always; on an edge or a vertex when it owns that feature and no line (point) model of its
-// surface tests the edges (vertices).
-bool ownsFeature(const CollisionGeometry& g, std::uint32_t triangle, const Vec3d& barycentric,
-                 bool featuresElsewhere = true) {
+// Whether triangle t reports a contact at x (barycentric coordinates `barycentric`) with the
+// other side in direction u from x: inside it always; on an edge or a vertex only when
+// - no line (point) model of its surface tests the edges (vertices), unless featuresElsewhere
+//   is false (triangle against triangle, which tests its own features),
+// - it owns that feature (one triangle reports a shared edge or vertex), and
+// - the feature is the closest part of the surface around it: the other triangle on the edge
+//   (every point joined to the vertex) does not turn towards u, u.(y - x) <= 0; otherwise that
+//   triangle's inside is closer and reports the contact (a flat floor gives no edge contact).
+bool keepsFeature(const CollisionGeometry& g, std::uint32_t t, const Vec3d& barycentric,
+                  const Vec3d& x, const Vec3d& u, bool featuresElsewhere = true) {
   const int bit = featureBit(barycentric);
   if (bit < 0) return true;
-  if (!featuresElsewhere) return g.featureOwnership[triangle] >> bit & 1u;
-  if (bit < 3 ? g.verticesElsewhere : g.edgesElsewhere) return false;
-  return g.featureOwnership[triangle] >> bit & 1u;
+  if (featuresElsewhere && (bit < 3 ? g.verticesElsewhere : g.edgesElsewhere)) return false;
+  if (!(g.featureOwnership[t] >> bit & 1u)) return false;
+  const double un = u.norm();
+  auto turnsTowards = [&](const Vec3d& y) {
+    const Vec3d e = y - x;
+    return u.dot(e) > 1e-12 * un * e.norm();
+  };
+  if (bit >= 3) {
+    const std::uint32_t opposite = g.triangleEdgeNeighbors[3 * t + (bit - 3)];
+    return opposite == CollisionGeometry::kNoVertex || !turnsTowards(g.points[opposite]);
+  }
+  const std::uint32_t v = g.triangles[t][bit];
+  for (std::uint32_t k = g.neighborOffsets[v]; k < g.neighborOffsets[v + 1]; ++k)
+    if (turnsTowards(g.points[g.neighbors[k]])) return false;
+  return true;
 }
 
 // --- Tests of one pair; `limit` is the largest gap that makes a contact -----------------------
@@ -169,7 +186,8 @@ bool pointTriangle(const Side& A, std::uint32_t i, const Side& B, std::uint32_t 
   const auto& t = B.g.triangles[j];
   const PointTriangleResult r =
       closestPointOnTriangle(p, B.g.points[t[0]], B.g.points[t[1]], B.g.points[t[2]]);
-  if (!ownsFeature(B.g, j, r.barycentric) || !(r.distance < limit)) return false;
+  if (!(r.distance < limit) || !keepsFeature(B.g, j, r.barycentric, r.closest, p - r.closest))
+    return false;
   const Vec3d& n = B.g.triangleNormals[j];
   if (!B.bothSide && (p - r.closest).dot(n) < 0) return false;  // behind the triangle
   if (s.localMinimum && !isLocalMinimum(A.g, i, p, r.closest - p, s.angleCone)) return false;
@@ -209,7 +227,7 @@ bool spherePrimitive(const Side& A, std::uint32_t i, const Side& B, std::uint32_
       const auto& t = B.g.triangles[j];
       const PointTriangleResult r =
           closestPointOnTriangle(center, B.g.points[t[0]], B.g.points[t[1]], B.g.points[t[2]]);
-      if (!ownsFeature(B.g, j, r.barycentric)) return false;  // the owner reports it
+      if (!keepsFeature(B.g, j, r.barycentric, r.closest, center - r.closest)) return false;
       const Vec3d& n = B.g.triangleNormals[j];
       if (!B.bothSide && (center - r.closest).dot(n) < 0) return false;
       q = r.closest;
@@ -240,7 +258,9 @@ void triangleTriangle(const Side& A, std::uint32_t i, const Side& B, std::uint32
     const Vec3d& p = A.g.points[ta[k]];
     const PointTriangleResult r =
         closestPointOnTriangle(p, B.g.points[tb[0]], B.g.points[tb[1]], B.g.points[tb[2]]);
-    if (!(r.distance < limit) || !ownsFeature(B.g, j, r.barycentric, false)) continue;
+    if (!(r.distance < limit) ||
+        !keepsFeature(B.g, j, r.barycentric, r.closest, p - r.closest, false))
+      continue;
     const Vec3d& n = B.g.triangleNormals[j];
     if (!B.bothSide && (p - r.closest).dot(n) < 0) continue;
     emit(makeContact(i, j, p, r.closest, vertexWeights(k), r.barycentric,
@@ -254,7 +274,7 @@ void triangleTriangle(const Side& A, std::uint32_t i, const Side& B, std::uint32
         closestPointOnTriangle(q, A.g.points[ta[0]], A.g.points[ta[1]], A.g.points[ta[2]]);
     const int bit = featureBit(r.barycentric);
     if (!(r.distance < limit) || (bit >= 0 && bit < 3) ||
-        !ownsFeature(A.g, i, r.barycentric, false))
+        !keepsFeature(A.g, i, r.barycentric, r.closest, q - r.closest, false))
       continue;
     const Vec3d& n = A.g.triangleNormals[i];
     if (!A.bothSide && (q - r.closest).dot(n) < 0) continue;

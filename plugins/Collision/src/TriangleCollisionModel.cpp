@@ -35,6 +35,34 @@ std::vector<std::uint8_t> computeOwnership(std::span<const std::array<std::uint3
   return owned;
 }
 
+// For each triangle edge (t, k) = (t[k], t[k + 1]), the third vertex of another triangle on that
+// edge, or kNoVertex (the first other one found, when a non-manifold edge has several).
+std::vector<std::uint32_t> computeEdgeNeighbors(
+    std::span<const std::array<std::uint32_t, 3>> triangles) {
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> edges;  // (key, triangle * 3 + local)
+  edges.reserve(3 * triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint64_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
+      edges.push_back(
+          {std::min(a, b) << 32 | std::max(a, b), static_cast<std::uint32_t>(3 * t + k)});
+    }
+  std::sort(edges.begin(), edges.end());
+  std::vector<std::uint32_t> neighbors(3 * triangles.size(), CollisionGeometry::kNoVertex);
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j].first == edges[i].first) ++j;
+    for (std::size_t a = i; a < j; ++a)
+      for (std::size_t b = i; b < j; ++b) {
+        if (a == b || neighbors[edges[a].second] != CollisionGeometry::kNoVertex) continue;
+        const std::uint32_t other = edges[b].second;
+        neighbors[edges[a].second] = triangles[other / 3][(other % 3 + 2) % 3];
+      }
+    i = j;
+  }
+  return neighbors;
+}
+
 }  // namespace
 
 void TriangleCollisionModel::init() {
@@ -79,9 +107,15 @@ void TriangleCollisionModel::updateTriangles() {
   }
   if (!collision::checkElementIndices<3>(*this, m_triangles, m_state->size(), "triangle")) return;
   m_ownership = computeOwnership(m_triangles, m_state->size());
+  m_edgeNeighbors = computeEdgeNeighbors(m_triangles);
+  m_ring = collision::pointNeighbors(
+      m_state->size(), {}, std::span<const Triangle>(m_triangles.data(), m_triangles.size()));
   m_normals.resize(m_triangles.size());
   m_geometry.triangles = m_triangles;
   m_geometry.featureOwnership = m_ownership;
+  m_geometry.triangleEdgeNeighbors = m_edgeNeighbors;
+  m_geometry.neighborOffsets = m_ring.offsets;
+  m_geometry.neighbors = m_ring.entries;
   m_geometry.triangleNormals = m_normals;
 }
 

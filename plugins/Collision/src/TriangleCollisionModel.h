@@ -31,6 +31,8 @@ class TriangleCollisionModel final : public CollisionModel {
   std::uint64_t m_topologyRevision = ~std::uint64_t{0};
   std::vector<std::array<std::uint32_t, 3>> m_triangles;
   std::vector<std::uint8_t> m_ownership;
+  std::vector<std::uint32_t> m_edgeNeighbors;  // 3 per triangle
+  collision::NeighborLists m_ring;             // each point's neighbours on the triangles
   std::vector<Vec3d> m_normals;
 };
 
