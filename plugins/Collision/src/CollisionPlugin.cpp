@@ -3,11 +3,13 @@
 #include "BruteForceBroadPhase.h"
 #include "CollisionPipeline.h"
 #include "CollisionResponse.h"
+#include "CubeCollisionModel.h"
 #include "DiscreteIntersection.h"
 #include "LineCollisionModel.h"
 #include "LocalMinDistance.h"
 #include "MinProximityIntersection.h"
 #include "NewProximityIntersection.h"
+#include "OBBCollisionModel.h"
 #include "PointCollisionModel.h"
 #include "SphereCollisionModel.h"
 #include "TriangleCollisionModel.h"
@@ -55,6 +57,18 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .with<SphereCollisionModel<Vec3Types>>("Vec3d")
       .with<SphereCollisionModel<Rigid3Types>>("Rigid3d")
       .alias("SphereModel");
+  registry
+      .add("OBBCollisionModel",
+           "Oriented boxes on the frames of a Rigid3d state (extents, defaultExtent), their "
+           "contacts by GJK/EPA")
+      .with<OBBCollisionModel>("Rigid3d")
+      .alias("OBBModel");
+  registry
+      .add("CubeCollisionModel",
+           "Accepted for SOFA's scenes, adds no primitive: SOFA's bounding-volume hierarchy of "
+           "a model, which here is BVHNarrowPhase's Bullet tree")
+      .with<CubeCollisionModel>()
+      .alias("CubeModel");
 }
 
 }  // namespace

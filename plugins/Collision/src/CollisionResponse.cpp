@@ -41,11 +41,12 @@ std::unique_ptr<BaseForceField> makePenalty(BaseMechanicalState* s1, BaseMechani
 }
 
 // The vertices of a primitive (SOFA's contact mappers: a point, a segment's ends, a triangle's
-// corners, a sphere's centre).
+// corners, a sphere's centre, a box's frame).
 void primitiveVertices(const CollisionGeometry& g, std::uint32_t i, PenaltyContact& c, int side) {
   switch (g.kind) {
     case PrimitiveKind::point:
     case PrimitiveKind::sphere:
+    case PrimitiveKind::box:
       c.vertices[side] = {i, 0, 0};
       c.vertexCount[side] = 1;
       break;
@@ -58,6 +59,14 @@ void primitiveVertices(const CollisionGeometry& g, std::uint32_t i, PenaltyConta
       c.vertexCount[side] = 3;
       break;
   }
+}
+
+// The contact point's offset from its box's centre (the frame's origin) in the box's axes;
+// zero for the other primitives.
+Vec3d frameArm(const CollisionGeometry& g, std::uint32_t i, const Vec3d& point) {
+  if (g.kind != PrimitiveKind::box) return Vec3d::Zero();
+  const OrientedBox& b = g.boxes[i];
+  return b.rotation.transpose() * (point - b.center);
 }
 
 }  // namespace
@@ -182,6 +191,10 @@ void CollisionResponse::updateResponses(std::span<const ModelPairContacts> conta
       primitiveVertices(g2, c.primitive[1], p, 1);
       p.weights[0] = c.weights[0];
       p.weights[1] = c.weights[1];
+      // A box's contact point is off its frame's origin: its arm in the frame's axes, so that
+      // it turns with the frame (a sphere's force goes through its centre: no arm).
+      p.arm[0] = frameArm(g1, c.primitive[0], c.point[0]);
+      p.arm[1] = frameArm(g2, c.primitive[1], c.point[1]);
       p.normal = c.normal;
       const double r1 = g1.kind == PrimitiveKind::sphere ? g1.radius(c.primitive[0]) : 0.0;
       const double r2 = g2.kind == PrimitiveKind::sphere ? g2.radius(c.primitive[1]) : 0.0;

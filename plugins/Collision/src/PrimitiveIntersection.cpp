@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 
+#include "BoxIntersection.h"
 #include "Collision/kernels/Proximity.h"
 
 namespace stroma::collision {
@@ -38,6 +39,7 @@ int primitiveVertices(const CollisionGeometry& g, std::uint32_t i,
       return 3;
     case PrimitiveKind::point:
     case PrimitiveKind::sphere:
+    case PrimitiveKind::box:
       v = {i, 0, 0};
       return 1;
   }
@@ -201,7 +203,7 @@ bool spherePrimitive(const Side& A, std::uint32_t i, const Side& B, std::uint32_
                      const IntersectionSettings& s, double limit, Contact& c) {
   const Vec3d& center = A.g.points[i];
   const double radius = A.g.radius(i);
-  Vec3d q, weights = kFirstVertex, fallback = Vec3d::UnitZ();
+  Vec3d q = center, weights = kFirstVertex, fallback = Vec3d::UnitZ();
   double d = 0, otherRadius = 0;
   switch (B.g.kind) {
     case PrimitiveKind::point:
@@ -236,6 +238,8 @@ bool spherePrimitive(const Side& A, std::uint32_t i, const Side& B, std::uint32_
       fallback = -n;
       break;
     }
+    case PrimitiveKind::box:  // boxes come first: BoxIntersection
+      return false;
   }
   const double gap = d - radius - otherRadius;
   if (!(gap < limit)) return false;
@@ -314,9 +318,12 @@ Contact flipped(const Contact& c) {
 }
 
 // Kinds in the order of the tests' first argument: point < line < triangle < sphere, except
-// that spheres come first against everything (spherePrimitive handles every other kind).
+// that boxes come first against everything (BoxIntersection handles every other kind), then
+// spheres (spherePrimitive handles every other kind but boxes).
 int rank(PrimitiveKind k) {
   switch (k) {
+    case PrimitiveKind::box:
+      return -1;
     case PrimitiveKind::sphere:
       return 0;
     case PrimitiveKind::point:
@@ -334,6 +341,7 @@ int rank(PrimitiveKind k) {
 bool supportsKinds(PrimitiveKind a, PrimitiveKind b, const IntersectionSettings& s) {
   if (rank(a) > rank(b)) std::swap(a, b);
   using K = PrimitiveKind;
+  if (a == K::box) return true;
   if (a == K::sphere) return b != K::triangle || s.useSphereTriangle;
   if (a == K::point && b == K::point) return s.usePointPoint;
   if (a == K::point && b == K::line) return s.useLinePoint;
@@ -373,7 +381,21 @@ void intersectModels(const CollisionModel& first, const CollisionModel& second,
       if (pairTest(A, i, B, j, s, limit, c)) emit(c);
     });
   };
-  if (A.g.kind == K::sphere)
+  if (A.g.kind == K::box) {
+    // GJK/EPA (BoxIntersection.h): up to 8 contacts per pair; LocalMinDistance filters the
+    // points and segments of a surface as it does against the other primitives.
+    const bool filter = s.localMinimum && (B.g.kind == K::point || B.g.kind == K::line);
+    run([&](std::uint32_t i, std::uint32_t j, Contact&) {
+      std::array<Contact, kMaxBoxContacts> found;
+      const int n = intersectBox(A.g, i, B.g, j, B.bothSide, limit, found);
+      for (int k = 0; k < n; ++k) {
+        const Contact& c = found[k];
+        if (filter && !isLocalMinimum(B.g, j, c.point[1], c.point[0] - c.point[1], s.angleCone))
+          continue;
+        emit(c);
+      }
+    });
+  } else if (A.g.kind == K::sphere)
     with([](auto&&... a) { return spherePrimitive(a...); });
   else if (A.g.kind == K::point && B.g.kind == K::point)
     with([](auto&&... a) { return pointPoint(a...); });

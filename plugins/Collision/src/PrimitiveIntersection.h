@@ -16,6 +16,8 @@
 //                     SOFA's point, line and triangle models side by side the triangle keeps
 //                     its interior, and a surface of triangles alone still has every contact
 //   sphere-X          the centre against the whole point, segment (interior) or sphere
+//   box-X             GJK/EPA made exact (BoxIntersection.h): a face contact gives the points
+//                     of the contact polygon, an edge or vertex contact the closest points
 //   triangle-triangle (NewProximityIntersection only) each triangle's owned vertices against
 //                     the other, and the interiors of their owned edges
 // "Interior" excludes parameters within 1e-6 of an end, as SOFA does.
