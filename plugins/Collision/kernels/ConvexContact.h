@@ -7,18 +7,24 @@
 // polygon that a rigid body needs to rest on a face. Nothing of Bullet is in this header.
 //
 // Why the refinement: Debian's Bullet is single precision, and GJK/EPA stop at a relative
-// accuracy of 1e-4 (GJK_ACCURACY, EPA_ACCURACY in float builds): their witness points and
-// normals are good to about 1e-7 of the primitives' size only when the pair is far from
-// touching, and EPA's normal to 1e-4. Bullet's direction n (A to B) picks the features:
+// accuracy of 1e-4 (GJK_ACCURACY, EPA_ACCURACY in float builds). Measured on 20000 random pairs
+// of boxes: the median error of Bullet's normal is 1e-7 rad and of its distance 7e-8 of the
+// boxes' size, but on 0.3 % of the pairs GJK stops early (distance off by up to 0.08 of the
+// size, normal by up to 0.45 rad). Bullet's direction n (A to B) picks the features:
 // - separated (GJK): the support features of A along n and of B along -n (a face, an edge or a
 //   vertex, taken generously: a superset of the true closest features), whose exact closest
-//   points in double give the distance and the normal;
+//   points in double give the distance d and the normal n'. They are certified: the separation
+//   along n' (min over B of n'.x - max over A, a lower bound of the distance for any direction)
+//   must equal d (to 1e-9 of the size); otherwise every pair of features is tried (each vertex
+//   against the other primitive, each edge against each edge), certified the same way, and the
+//   pair goes to the axes below when even that fails (the primitives interpenetrate);
 // - interpenetrating (EPA): the penetration direction of two polytopes is a face normal of one
 //   of them or the cross product of an edge of each (the faces of their Minkowski difference);
-//   among those axes within kEpaCone of EPA's normal, the one of least overlap gives the exact
-//   normal and depth (the separating-axis overlap, Gottschalk, Lin and Manocha 1996; Ericson,
-//   "Real-Time Collision Detection", 2005, section 4.4), and all the axes when EPA gives none
-//   (it fails on touching primitives).
+//   the axis of least overlap among those within kEpaCone of EPA's normal gives the exact normal
+//   and depth (the separating-axis overlap, Gottschalk, Lin and Manocha 1996; Ericson,
+//   "Real-Time Collision Detection", 2005, section 4.4), unless another axis overlaps less (EPA
+//   failed or stopped early), which then wins.
+// Bullet works around the smaller primitive in units of its size (its tolerances are absolute).
 // When the normal is a face normal of either primitive (a vertex, an edge or a face against a
 // face), the contacts are the vertices of the other primitive's face most turned towards it
 // (its incident face), clipped to the reference face's side planes (Sutherland and Hodgman 1974),
@@ -75,7 +81,8 @@ struct ConvexContacts {
   double distance = 0;
   /// Whether the normal is a face normal and the points the clipped incident face.
   bool faceContact = false;
-  /// Whether Bullet's EPA failed and the axis came from all candidate axes.
+  /// Whether Bullet's answer was not the exact one (GJK stopped early, EPA failed or chose
+  /// another axis) and the slow path gave it: every pair of features, or every candidate axis.
   bool usedFallback = false;
 };
 
