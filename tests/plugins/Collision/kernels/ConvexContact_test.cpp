@@ -444,6 +444,67 @@ TEST(ConvexContact, RandomBoxTrianglePairsGiveTheExactDistanceAndDepth) {
   EXPECT_GT(separated, 1000);
 }
 
+TEST(ConvexContact, RandomBoxSegmentAndBoxPointPairsGiveTheExactDistanceAndDepth) {
+  // A segment: the brute-force distance (its ends against the box, the box's corners against it,
+  // edges against it) when apart, the least overlap along the 6 separating axes (3 box faces,
+  // 3 box edges across the segment) when it crosses the box. A point: its distance to the box,
+  // or minus its depth under the nearest face.
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int crossing = 0, inside = 0;
+  for (int n = 0; n < 20000; ++n) {
+    const OrientedBox b = box(
+        Vec3d::Zero(), Vec3d(0.5 + 0.4 * u(random), 0.5 + 0.4 * u(random), 0.5 + 0.4 * u(random)),
+        rotation(3 * u(random), Vec3d(u(random), u(random), u(random))));
+    auto corner = [&](int k) {
+      Vec3d local;
+      for (int i = 0; i < 3; ++i) local[i] = (k >> i & 1) ? b.halfExtents[i] : -b.halfExtents[i];
+      return Vec3d(b.center + b.rotation * local);
+    };
+    auto signedToBox = [&](const Vec3d& p) {
+      const Vec3d local = b.rotation.transpose() * (p - b.center);
+      const double out = (local - local.cwiseMax(-b.halfExtents).cwiseMin(b.halfExtents)).norm();
+      return out > 0 ? out : -(b.halfExtents - local.cwiseAbs()).minCoeff();
+    };
+    const Vec3d p0 = 1.5 * Vec3d(u(random), u(random), u(random));
+    const Vec3d p1 = p0 + Vec3d(u(random), u(random), u(random));
+    double exact = std::min(signedToBox(p0), signedToBox(p1));
+    for (int k = 0; k < 8; ++k) {
+      exact = std::min(exact, closestPointOnSegment(corner(k), p0, p1).distance);
+      for (int i = 0; i < 3; ++i)
+        if (!(k >> i & 1))
+          exact = std::min(exact,
+                           closestPointsOfSegments(corner(k), corner(k | 1 << i), p0, p1).distance);
+    }
+    double sat = -std::numeric_limits<double>::infinity();
+    std::vector<Vec3d> axes = {b.rotation.col(0), b.rotation.col(1), b.rotation.col(2)};
+    for (int i = 0; i < 3; ++i) {
+      const Vec3d c = b.rotation.col(i).cross(p1 - p0);
+      if (c.norm() > 1e-9) axes.push_back(c.normalized());
+    }
+    for (const Vec3d& d : axes)
+      for (double sign : {1.0, -1.0}) {
+        const Vec3d e = sign * d;
+        sat = std::max(sat, std::min(e.dot(p0), e.dot(p1)) - e.dot(b.center) -
+                                (b.rotation.transpose() * e).cwiseAbs().dot(b.halfExtents));
+      }
+    crossing += sat < 0;
+    ConvexContacts c;
+    ASSERT_TRUE(computeConvexContacts(ConvexPrimitive::orientedBox(b),
+                                      ConvexPrimitive::segment(p0, p1), 10, c))
+        << n;
+    EXPECT_NEAR(c.distance, sat < 0 ? sat : exact, kExact) << n;
+    const double point = signedToBox(p0);
+    inside += point < 0;
+    ASSERT_TRUE(
+        computeConvexContacts(ConvexPrimitive::orientedBox(b), ConvexPrimitive::point(p0), 10, c))
+        << n;
+    EXPECT_NEAR(c.distance, point, kExact) << n;
+  }
+  EXPECT_GT(crossing, 1000);
+  EXPECT_GT(inside, 500);
+}
+
 TEST(ConvexContact, RandomBoxesOverALargeFloorTriangle) {
   // 20 cm boxes, turned by up to 0.3 rad, around a floor triangle 20 m across (two orders of
   // magnitude apart: Bullet's absolute tolerances must not be those of the floor): the distance
