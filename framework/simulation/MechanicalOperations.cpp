@@ -214,6 +214,10 @@ void MechanicalOperations::fixedGlobalRows(std::vector<char>& fixed) const {
   }
 }
 
+bool MechanicalOperations::contains(const BaseMechanicalState* state) const {
+  return std::find(m_states.begin(), m_states.end(), state) != m_states.end();
+}
+
 Eigen::SparseMatrix<double> MechanicalOperations::totalJacobian(const BaseMechanicalState* state) {
   const auto n = static_cast<Eigen::Index>(m_systemSize);
   const auto it = std::find(m_independent.begin(), m_independent.end(), state);

@@ -114,12 +114,18 @@ class MechanicalOperations {
   /// "vertex 12 of /root/Body/dofs (|velocity| component 3.2e+04)", `what` naming `v`.
   std::string describeWorstVertex(VecId v, const std::string& what) const;
 
+  /// d(state's dofs) / d(system dofs): the selection of an independent state's rows, the
+  /// product of the mapping Jacobians for a mapped one, zero for a state outside this system
+  /// ((state matrixSize) x systemSize()).
+  Eigen::SparseMatrix<double> totalJacobian(const BaseMechanicalState* state);
+  /// Whether `state` is one of this solver's states (independent or mapped).
+  bool contains(const BaseMechanicalState* state) const;
+
  private:
   void collect(Node& node, bool isSolverNode);
   void collectInteractions();
   void collectLoadedMappings();
   void clearOnAll(VecId v);
-  Eigen::SparseMatrix<double> totalJacobian(const BaseMechanicalState* state);
 
   Node& m_node;
   Timing& m_timing;

@@ -11,9 +11,19 @@ class MechanicalOperations;
 
 /// Integrates the states of its node's subtree over one time step (subtrees with their own
 /// solver excluded), through MechanicalOperations only.
+struct ConstraintResponse;
+
 class OdeSolver : public Base {
  public:
   virtual void solve(MechanicalOperations& mop, double dt) = 0;
+
+  /// How its states answer a force held over a step of `dt` (Constraints.h), for the
+  /// constraint corrections; false when the scheme has no such answer.
+  virtual bool constraintResponse(double dt, ConstraintResponse& response) const {
+    (void)dt;
+    (void)response;
+    return false;
+  }
 
   /// Called by the animation loop when the solver's node has no mechanical state at or below
   /// it: warns once, since such a solver integrates nothing (a misplaced solver or state).
@@ -42,6 +52,15 @@ class LinearSolver : public Base {
  public:
   virtual LinearSolveReport solve(MechanicalOperations& mop, const MechanicalParams& mp, VecId x,
                                   VecId rhs) = 0;
+  /// Solves again with the matrix of its last solve (a direct solver keeps its factorization:
+  /// the constraint corrections solve once per constraint row). False when it cannot; the
+  /// caller then calls solve().
+  virtual bool solveWithLastMatrix(MechanicalOperations& mop, VecId x, VecId rhs) {
+    (void)mop;
+    (void)x;
+    (void)rhs;
+    return false;
+  }
 };
 
 }  // namespace stroma

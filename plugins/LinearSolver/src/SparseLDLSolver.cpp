@@ -12,6 +12,7 @@ namespace stroma {
 
 LinearSolveReport SparseLDLSolver::solve(MechanicalOperations& mop, const MechanicalParams& mp,
                                          VecId x, VecId rhs) {
+  m_factorized = false;
   mop.assemble(mp, m_matrix);
   ScopedPhase phase(mop.timing(), "linearSolve");
   const Eigen::SparseMatrix<double>& A = m_matrix.matrix();
@@ -76,11 +77,20 @@ LinearSolveReport SparseLDLSolver::solve(MechanicalOperations& mop, const Mechan
                "integration unstable; reported once");
   }
   d_LNnz.setValue(static_cast<int>(m_ldlt.matrixL().nestedExpression().nonZeros()));
+  m_factorized = true;
 
   mop.gather(rhs, m_rhs);
   m_solution = m_ldlt.solve(m_rhs);
   mop.scatter(m_solution, x);
   return report;
+}
+
+bool SparseLDLSolver::solveWithLastMatrix(MechanicalOperations& mop, VecId x, VecId rhs) {
+  if (!m_factorized || static_cast<std::size_t>(m_ldlt.rows()) != mop.systemSize()) return false;
+  mop.gather(rhs, m_rhs);
+  m_solution = m_ldlt.solve(m_rhs);
+  mop.scatter(m_solution, x);
+  return true;
 }
 
 }  // namespace stroma

@@ -39,11 +39,14 @@ class SparseLDLSolver final : public LinearSolver {
 
   LinearSolveReport solve(MechanicalOperations& mop, const MechanicalParams& mp, VecId x,
                           VecId rhs) override;
+  /// With the factorization of the last solve (one product by L^-T D^-1 L^-1 per call).
+  bool solveWithLastMatrix(MechanicalOperations& mop, VecId x, VecId rhs) override;
 
  private:
   AssembledMatrix m_matrix;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> m_ldlt;
   bool m_reportedIndefinite = false;
+  bool m_factorized = false;  ///< the last solve left a usable factorization
   std::uint64_t m_analyzedRevision = 0;  ///< patternRevision() of the analysis; 0: none
   Eigen::VectorXd m_rhs, m_solution;
 };

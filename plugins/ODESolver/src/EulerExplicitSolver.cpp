@@ -54,4 +54,17 @@ void EulerExplicitSolver::solve(MechanicalOperations& mop, double dt) {
   finishStep(mop, *this, m_step, m_divergence, &m_energy);
 }
 
+bool EulerExplicitSolver::constraintResponse(double dt, ConstraintResponse& response) const {
+  // Symplectic Euler: dv = h M^-1 f, x moves by h dv. Forward Euler moves x with the old
+  // velocity: a force of the step does not move it, so no constraint can act on it.
+  if (!d_symplectic.value()) return false;
+  response.matrix = MechanicalParams{};
+  response.matrix.dt = dt;
+  response.matrix.mFactor = 1.0;
+  response.matrix.kFactor = 0.0;
+  response.positionFactor = dt * dt;
+  response.velocityFactor = dt;
+  return true;
+}
+
 }  // namespace stroma

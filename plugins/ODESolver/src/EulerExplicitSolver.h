@@ -4,6 +4,7 @@
 #include "DivergenceMonitor.h"
 #include "StabilityBound.h"
 #include "core/Link.h"
+#include "simulation/Constraints.h"
 #include "simulation/Solvers.h"
 
 namespace stroma {
@@ -31,6 +32,7 @@ class EulerExplicitSolver final : public OdeSolver {
 
   void init() override;
   void solve(MechanicalOperations& mop, double dt) override;
+  bool constraintResponse(double dt, ConstraintResponse& response) const override;
   void cleanup() override { m_divergence.summarize(m_step); }
 
  private:

@@ -167,4 +167,20 @@ void EulerImplicitSolver::cleanup() {
                "newtonIterations");
 }
 
+bool EulerImplicitSolver::constraintResponse(double dt, ConstraintResponse& response) const {
+  // The solved increment is dv (x moves by h dv) with the matrix of solve(); first order: the
+  // increment is dx itself (v = dx / h).
+  const double h = dt;
+  const double rm = d_rayleighMass.value(), rs = d_rayleighStiffness.value();
+  const bool firstOrder = d_firstOrder.value();
+  response.matrix = MechanicalParams{};
+  response.matrix.dt = h;
+  response.matrix.mFactor = firstOrder ? 1.0 : 1.0 + h * rm;
+  response.matrix.kFactor = firstOrder ? -h : -h * (h + rs);
+  response.matrix.bFactor = 0;
+  response.positionFactor = firstOrder ? h : h * h;
+  response.velocityFactor = firstOrder ? 1.0 : h;
+  return true;
+}
+
 }  // namespace stroma

@@ -3,6 +3,7 @@
 
 #include "DivergenceMonitor.h"
 #include "core/Link.h"
+#include "simulation/Constraints.h"
 #include "simulation/Solvers.h"
 
 namespace stroma {
@@ -78,6 +79,7 @@ class EulerImplicitSolver final : public OdeSolver {
 
   void init() override;
   void solve(MechanicalOperations& mop, double dt) override;
+  bool constraintResponse(double dt, ConstraintResponse& response) const override;
   void cleanup() override;
 
  private:

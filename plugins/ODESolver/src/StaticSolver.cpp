@@ -219,4 +219,15 @@ void StaticSolver::cleanup() {
                field);
 }
 
+bool StaticSolver::constraintResponse(double dt, ConstraintResponse& response) const {
+  // Equilibrium f(x + dx) + f_c = 0: -K dx = f_c; no velocity.
+  response.matrix = MechanicalParams{};
+  response.matrix.dt = dt;
+  response.matrix.mFactor = 0.0;
+  response.matrix.kFactor = -1.0;
+  response.positionFactor = 1.0;
+  response.velocityFactor = 0.0;
+  return true;
+}
+
 }  // namespace stroma

@@ -5,6 +5,7 @@
 #include "NewtonRaphsonSolver.h"
 #include "NewtonSettings.h"
 #include "core/Link.h"
+#include "simulation/Constraints.h"
 #include "simulation/Solvers.h"
 
 namespace stroma {
@@ -85,6 +86,7 @@ class StaticSolver final : public OdeSolver {
 
   void init() override;
   void solve(MechanicalOperations& mop, double dt) override;
+  bool constraintResponse(double dt, ConstraintResponse& response) const override;
   void cleanup() override;
 
  private:

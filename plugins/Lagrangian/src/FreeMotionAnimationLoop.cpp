@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: MIT
+#include "FreeMotionAnimationLoop.h"
+
+#include "collision/CollisionPipeline.h"
+#include "core/Node.h"
+#include "simulation/MechanicalOperations.h"
+#include "simulation/MechanicalState.h"
+#include "simulation/Solvers.h"
+#include "simulation/Timing.h"
+
+namespace stroma {
+
+using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+
+struct FreeMotionAnimationLoop::SolverSystem {
+  OdeSolver* solver = nullptr;
+  std::unique_ptr<MechanicalOperations> mop;
+  BaseConstraintCorrection* correction = nullptr;
+  ConstraintResponse response;
+  RowMatrix H;
+};
+
+FreeMotionAnimationLoop::FreeMotionAnimationLoop() = default;
+FreeMotionAnimationLoop::~FreeMotionAnimationLoop() = default;
+
+void FreeMotionAnimationLoop::init() {
+  if (node() && node()->parent())
+    msgWarning("an animation loop acts from the root node only: move it to " +
+               node()->root().path());
+  m_solver = l_constraintSolver.get();
+  if (!m_solver && node()) m_solver = node()->get<BaseConstraintSolver>();
+  if (!m_solver)
+    msgError("needs a constraint solver (GenericConstraintSolver, LCPConstraintSolver) in its "
+             "node, or a 'constraintSolver' link",
+             "constraintSolver");
+}
+
+void FreeMotionAnimationLoop::collectSolvers(Node& node) {
+  if (!node.d_activated.value()) return;
+  for (OdeSolver* solver : node.getAll<OdeSolver>())
+    if (solver->isValid()) m_solvers.push_back({&node, solver});
+  for (const auto& child : node.children()) collectSolvers(*child);
+}
+
+namespace {
+
+void collectConstraints(Node& node, std::vector<BaseLagrangianConstraint*>& out) {
+  if (!node.d_activated.value()) return;
+  for (const auto& o : node.objects())
+    if (auto* c = dynamic_cast<BaseLagrangianConstraint*>(o.get()); c && c->isValid())
+      out.push_back(c);
+  for (const auto& child : node.children()) collectConstraints(*child, out);
+}
+
+// The correction of a solver's states: in its node, else in a node below it that has no solver
+// of its own.
+BaseConstraintCorrection* findCorrection(Node& node, bool isSolverNode) {
+  if (!isSolverNode && node.get<OdeSolver>()) return nullptr;
+  if (auto* c = node.get<BaseConstraintCorrection>()) return c;
+  for (const auto& child : node.children())
+    if (auto* c = findCorrection(*child, false)) return c;
+  return nullptr;
+}
+
+}  // namespace
+
+void FreeMotionAnimationLoop::step(Node& root, double dt, Timing& timing) {
+  {
+    ScopedPhase phase(timing, "behaviorModels");
+    std::vector<Node*> stack{&root};
+    while (!stack.empty()) {
+      Node* n = stack.back();
+      stack.pop_back();
+      for (BehaviorModel* model : n->getAll<BehaviorModel>()) model->updatePosition(dt);
+      for (const auto& c : n->children()) stack.push_back(c.get());
+    }
+  }
+  m_solvers.clear();
+  collectSolvers(root);
+  {
+    ScopedPhase phase(timing, "freeMotion");
+    for (auto& [node, solver] : m_solvers) {
+      MechanicalOperations mop(*node, timing, dt);
+      if (!mop.hasState()) solver->reportNoState();
+      mop.projectVelocity(VecId::velocity());
+      solver->solve(mop, dt);
+    }
+  }
+  if (CollisionPhase* collision = root.get<CollisionPhase>(); collision && collision->isValid()) {
+    ScopedPhase phase(timing, "collision");
+    collision->computeCollisions(root, timing);
+  }
+  {
+    ScopedPhase phase(timing, "constraints");
+    solveConstraints(root, dt, timing);
+  }
+  root.setTime(root.time() + dt);
+}
+
+bool FreeMotionAnimationLoop::solveConstraints(Node& root, double dt, Timing& timing) {
+  m_rows.clear();
+  m_constraints.clear();
+  m_firstRows.clear();
+  collectConstraints(root, m_constraints);
+  for (BaseLagrangianConstraint* c : m_constraints) {
+    m_firstRows.push_back(m_rows.rowCount());
+    c->buildConstraintRows(m_rows, dt);
+  }
+  m_firstRows.push_back(m_rows.rowCount());
+  const auto m = static_cast<Eigen::Index>(m_rows.rowCount());
+  d_constraintRows.setValue(static_cast<int>(m));
+  if (m == 0 || !m_solver) return true;
+
+  // Each solver's rows, carried to its independent states, and its compliance.
+  m_W.setZero(m, m);
+  std::vector<SolverSystem> systems;
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (auto& [node, solver] : m_solvers) {
+    SolverSystem system;
+    system.solver = solver;
+    system.mop = std::make_unique<MechanicalOperations>(*node, timing, dt);
+    MechanicalOperations& mop = *system.mop;
+    const auto n = static_cast<Eigen::Index>(mop.systemSize());
+    system.H.resize(m, n);
+    bool any = false;
+    for (std::size_t s = 0; s < m_rows.states().size(); ++s) {
+      const BaseMechanicalState* state = m_rows.states()[s];
+      if (!mop.contains(state)) continue;
+      triplets.clear();
+      for (const ConstraintRows::Entry& e : m_rows.entriesOf(s))
+        triplets.emplace_back(static_cast<Eigen::Index>(e.row), static_cast<Eigen::Index>(e.dof),
+                              e.value);
+      RowMatrix onState(m, static_cast<Eigen::Index>(state->matrixSize()));
+      onState.setFromTriplets(triplets.begin(), triplets.end());
+      system.H += RowMatrix(onState * mop.totalJacobian(state));
+      any = true;
+    }
+    if (!any || system.H.nonZeros() == 0) continue;
+    // Fixed degrees of freedom do not move: their columns go.
+    std::vector<char> fixed;
+    mop.fixedGlobalRows(fixed);
+    system.H.prune([&](Eigen::Index, Eigen::Index col, double) {
+      return !fixed[static_cast<std::size_t>(col)];
+    });
+    system.correction = findCorrection(*node, true);
+    if (!system.correction) {
+      msgError("the states of " + node->path() + " have constraint rows (contacts or "
+               "constraints) but no constraint correction: add UncoupledConstraintCorrection or "
+               "LinearSolverConstraintCorrection beside its solver " + solver->path(),
+               "constraintSolver");
+      return false;
+    }
+    if (!solver->constraintResponse(dt, system.response)) {
+      msgError(solver->path() + " (" + solver->className() + ") cannot answer constraint "
+               "forces (forward Euler moves positions with the old velocities): use "
+               "EulerImplicitSolver or symplectic EulerExplicitSolver",
+               "constraintSolver");
+      return false;
+    }
+    system.correction->addCompliance(mop, system.response, system.H, m_W);
+    systems.push_back(std::move(system));
+  }
+
+  m_violation = Eigen::Map<const Eigen::VectorXd>(m_rows.violations().data(), m);
+  m_solver->solve(m_W, m_violation, m_rows.groups(), m_lambda);
+
+  for (SolverSystem& system : systems)
+    system.correction->applyCorrection(*system.mop, system.response, system.H, m_lambda);
+  for (std::size_t c = 0; c < m_constraints.size(); ++c)
+    m_constraints[c]->storeMultipliers(std::span<const double>(
+        m_lambda.data() + m_firstRows[c], m_firstRows[c + 1] - m_firstRows[c]));
+  return true;
+}
+
+}  // namespace stroma

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "core/Data.h"
+#include "core/Link.h"
+#include "simulation/AnimationLoop.h"
+#include "simulation/Constraints.h"
+
+namespace stroma {
+
+class MechanicalOperations;
+class OdeSolver;
+
+/// SOFA's FreeMotionAnimationLoop, in the root node: each step (Constraints.h)
+///   1. behavior models; free motion: every ODE solver integrates its states without the
+///      Lagrangian constraints;
+///   2. collision (when the root holds a collision pipeline), on the free positions: a
+///      constraint response (FrictionContactConstraint) turns the contacts into constraints;
+///   3. every Lagrangian constraint of the scene gives its rows and violations; the rows are
+///      carried to each solver's independent states through the mappings (H J);
+///   4. each solver's constraint correction adds its compliance to W;
+///   5. the constraint solver (`constraintSolver`, else the one in the root) finds the
+///      multipliers; each constraint receives its own;
+///   6. each correction moves its states (positions and velocities), the mapped states follow.
+/// A step with no constraint row is the free motion alone.
+class FreeMotionAnimationLoop final : public AnimationLoop {
+ public:
+  Link<BaseConstraintSolver> l_constraintSolver{this, "constraintSolver",
+                                                "The constraint solver (default: the one in "
+                                                "this node)."};
+  Data<bool> d_solveVelocityConstraintFirst{this, "solveVelocityConstraintFirst", false,
+                                            "SOFA option, accepted: constraints are solved on "
+                                            "positions."};
+  Data<bool> d_threadSafeVisitor{this, "threadSafeVisitor", false, "SOFA option, accepted."};
+  Data<bool> d_parallelCollisionDetectionAndFreeMotion{
+      this, "parallelCollisionDetectionAndFreeMotion", false, "SOFA option, accepted."};
+  Data<bool> d_parallelODESolving{this, "parallelODESolving", false, "SOFA option, accepted."};
+  Data<int> d_constraintRows{this, "constraintRows", 0,
+                             "Output: constraint rows of the last step.", {.output = true}};
+
+  FreeMotionAnimationLoop();
+  ~FreeMotionAnimationLoop() override;
+
+  void init() override;
+  void step(Node& root, double dt, Timing& timing) override;
+
+ private:
+  struct SolverSystem;  // one ODE solver's operations, rows and correction this step
+  void collectSolvers(Node& node);
+  bool solveConstraints(Node& root, double dt, Timing& timing);
+
+  BaseConstraintSolver* m_solver = nullptr;
+  std::vector<std::pair<Node*, OdeSolver*>> m_solvers;
+  std::vector<BaseLagrangianConstraint*> m_constraints;
+  std::vector<std::size_t> m_firstRows;
+  ConstraintRows m_rows;
+  Eigen::MatrixXd m_W;
+  Eigen::VectorXd m_violation, m_lambda;
+};
+
+}  // namespace stroma

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+#include "GenericConstraintSolver.h"
+
+#include "SolverSupport.h"
+#include "core/Message.h"
+
+namespace stroma {
+
+void GenericConstraintSolver::init() {
+  lagrangian::checkFreeMotionLoop(*this);
+  const std::string& method = d_resolutionMethod.value();
+  if (method != "ProjectedGaussSeidel" && method != "UnbuiltGaussSeidel")
+    msgError("resolutionMethod '" + method +
+                 "' is not provided; use ProjectedGaussSeidel or UnbuiltGaussSeidel",
+             "resolutionMethod");
+}
+
+void GenericConstraintSolver::cleanup() {
+  if (m_unconverged > 1)
+    msgWarning("stopped unconverged in " + std::to_string(m_unconverged) + " of " +
+                   std::to_string(m_solves) + " solves",
+               "maxIterations");
+}
+
+ConstraintSolveReport GenericConstraintSolver::solve(const Eigen::MatrixXd& W,
+                                                     const Eigen::VectorXd& violation,
+                                                     std::span<const ConstraintGroup> groups,
+                                                     Eigen::VectorXd& lambda) {
+  lambda = m_last.size() == violation.size() ? m_last : Eigen::VectorXd::Zero(violation.size());
+  const lagrangian::GaussSeidelSettings settings{.maxIterations = d_maxIterations.value(),
+                                                 .tolerance = d_tolerance.value(),
+                                                 .sor = d_sor.value()};
+  const ConstraintSolveReport report =
+      lagrangian::solveProjectedGaussSeidel(W, violation, groups, settings, lambda);
+  m_last = lambda;
+  ++m_solves;
+  d_currentIterations.setValue(report.iterations);
+  d_currentError.setValue(report.error);
+  d_constraintForces.edit().assign(lambda.data(), lambda.data() + lambda.size());
+  if (!report.converged && m_unconverged++ == 0)
+    msgWarning("stopped after " + std::to_string(report.iterations) +
+                   " iterations without converging: error " + formatNumber(report.error) +
+                   " > tolerance " + formatNumber(d_tolerance.value()) +
+                   " (raise maxIterations or the tolerance); later ones are counted",
+               "maxIterations");
+  return report;
+}
+
+}  // namespace stroma

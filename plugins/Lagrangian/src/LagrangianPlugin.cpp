@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+#include "BilateralLagrangianConstraint.h"
+#include "FreeMotionAnimationLoop.h"
+#include "GenericConstraintSolver.h"
+#include "LCPConstraintSolver.h"
+#include "LinearSolverConstraintCorrection.h"
+#include "UncoupledConstraintCorrection.h"
+#include "core/Plugin.h"
+
+namespace {
+
+void registerComponents(stroma::PluginRegistry& registry) {
+  using namespace stroma;
+  registry.add("FreeMotionAnimationLoop",
+               "Free motion, collision, then Lagrangian constraints solved through compliances")
+      .with<FreeMotionAnimationLoop>();
+  registry.add("GenericConstraintSolver",
+               "Constraint problem by projected Gauss-Seidel, friction cones included")
+      .with<GenericConstraintSolver>()
+      .alias("BlockGaussSeidelConstraintSolver")
+      .alias("ProjectedGaussSeidelConstraintSolver")
+      .alias("UnbuiltGaussSeidelConstraintSolver");
+  registry.add("LCPConstraintSolver", "Contact problem with one friction coefficient")
+      .with<LCPConstraintSolver>();
+  registry.add("UncoupledConstraintCorrection",
+               "Compliance of each degree of freedom alone (1 / mass)")
+      .with<UncoupledConstraintCorrection>();
+  registry.add("LinearSolverConstraintCorrection",
+               "Compliance through the solver's own system and linear solver")
+      .with<LinearSolverConstraintCorrection>()
+      .alias("GenericConstraintCorrection");
+  registry.add("BilateralLagrangianConstraint", "Points or frames held together by multipliers")
+      .with<BilateralLagrangianConstraint<Vec3Types>>("Vec3d")
+      .with<BilateralLagrangianConstraint<Rigid3Types>>("Rigid3d")
+      .alias("BilateralInteractionConstraint");
+}
+
+}  // namespace
+
+extern "C" STROMA_PLUGIN_EXPORT const stroma::PluginEntry* stroma_plugin_entry() {
+  static const stroma::PluginEntry entry = stroma::makePluginEntry(
+      "Lagrangian", "0.1.0", "Lagrangian constraints: free motion, compliances, multipliers",
+      registerComponents);
+  return &entry;
+}

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <string>
+
+#include "core/Data.h"
+#include "core/Link.h"
+#include "simulation/Constraints.h"
+#include "simulation/Solvers.h"
+
+namespace stroma {
+
+/// SOFA's LinearSolverConstraintCorrection and GenericConstraintCorrection: the compliance of
+/// the solver's states through its own system A (the matrix of its last step, mass, damping and
+/// stiffness: Constraints.h's ConstraintResponse):
+///   U = A^-1 H^T (one solve per constraint row, with the linear solver's factorization when it
+///   keeps one: SparseLDLSolver),   W += positionFactor complianceFactor H U,
+///   dx = positionFactor complianceFactor U lambda,   dv = velocityFactor complianceFactor U
+///   lambda.
+/// The linear solver is the `linearSolver` link, else the one in the ODE solver's node.
+class LinearSolverConstraintCorrection final : public BaseConstraintCorrection {
+ public:
+  Link<Base> l_linearSolver{this, "linearSolver",
+                            "The linear solver (default: the one in this node)."};
+  Link<Base> l_odeSolver{this, "ODESolver", "SOFA option, accepted: the node's ODE solver."};
+  Data<double> d_complianceFactor{this, "complianceFactor", 1.0,
+                                  "Factor of the compliance (and of the correction).",
+                                  {.min = 0.0}};
+  Data<bool> d_wireOptimization{this, "wire_optimization", false, "SOFA option, accepted."};
+  Data<std::string> d_solverName{this, "solverName", "", "SOFA's older name of linearSolver: "
+                                                         "accepted, the node's solver is used."};
+
+  void init() override;
+  void addCompliance(MechanicalOperations& mop, const ConstraintResponse& response,
+                     const Eigen::SparseMatrix<double, Eigen::RowMajor>& H,
+                     Eigen::MatrixXd& W) override;
+  void applyCorrection(MechanicalOperations& mop, const ConstraintResponse& response,
+                       const Eigen::SparseMatrix<double, Eigen::RowMajor>& H,
+                       const Eigen::VectorXd& lambda) override;
+
+ private:
+  LinearSolver* m_solver = nullptr;
+  Eigen::MatrixXd m_U;  // A^-1 H^T of the last compliance
+  Eigen::VectorXd m_rhs, m_column, m_correction;
+};
+
+}  // namespace stroma

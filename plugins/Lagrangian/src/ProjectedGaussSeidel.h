@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// The constraint problem of Constraints.h solved by projected Gauss-Seidel over the groups of
+// rows (Jean 1999, "The non-smooth contact dynamics method", CMAME 177; Duriez et al. 2006,
+// "Realistic haptic rendering of interacting deformable objects in virtual environments", IEEE
+// TVCG 12, for the compliance formulation SOFA uses): each group in turn is solved with the
+// others' multipliers fixed,
+//   bilateral:  lambda += -delta / W_rr,
+//   unilateral: lambda = max(0, lambda - delta / W_rr),
+//   friction:   the normal row as unilateral, then the tangent pair by its 2 x 2 block of W
+//               (sticking: delta_t = 0), projected onto the disc |lambda_t| <= mu lambda_n
+//               (sliding),
+// each change scaled by `sor` (over-relaxation), until no row's displacement W_rr dlambda_r
+// moves more than `tolerance` in a sweep.
+#pragma once
+
+#include <Eigen/Core>
+#include <span>
+
+#include "simulation/Constraints.h"
+
+namespace stroma::lagrangian {
+
+struct GaussSeidelSettings {
+  int maxIterations = 1000;
+  double tolerance = 1e-3;  ///< largest displacement change W_rr |dlambda_r| of a converged sweep
+  double sor = 1.0;
+  /// When >= 0, every friction group uses this coefficient (LCPConstraintSolver's `mu`).
+  double muOverride = -1;
+};
+
+/// Solves delta = violation + W lambda with each group's law; `lambda` is the start (warm start)
+/// and the result.
+ConstraintSolveReport solveProjectedGaussSeidel(const Eigen::MatrixXd& W,
+                                                const Eigen::VectorXd& violation,
+                                                std::span<const ConstraintGroup> groups,
+                                                const GaussSeidelSettings& settings,
+                                                Eigen::VectorXd& lambda);
+
+}  // namespace stroma::lagrangian
