@@ -20,13 +20,15 @@ class CollisionModel;
 /// the gap along it between the two surfaces: the distance between the two points minus the
 /// primitives' radii (spheres), negative when they interpenetrate. The points are on the
 /// primitives' own geometry (a sphere's point is on its surface, its center minus or plus
-/// radius * normal).
+/// radius * normal; a box's point is on its surface, off its frame's origin, which a response
+/// turns into a lever arm).
 struct Contact {
   std::uint32_t primitive[2] = {0, 0};  ///< index in the first and in the second model
   Vec3d point[2] = {Vec3d::Zero(), Vec3d::Zero()};
   /// Where each point is on its primitive, as weights of the primitive's vertices: (1, 0, 0) for
   /// a point or a sphere, (1 - t, t, 0) on a segment, barycentric coordinates on a triangle.
-  /// The point is sum_k weights[k] x_k + (sphere) radius * normal offset.
+  /// The point is sum_k weights[k] x_k + (sphere) radius * normal offset; a box has (1, 0, 0) on
+  /// its frame and its point off the frame's origin.
   Vec3d weights[2] = {Vec3d(1, 0, 0), Vec3d(1, 0, 0)};
   Vec3d normal = Vec3d::UnitZ();
   double distance = 0;

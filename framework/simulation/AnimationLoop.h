@@ -14,6 +14,9 @@ class AnimationLoop : public Base {
  public:
   /// One step of length dt from the root, recording phase times in `timing`.
   virtual void step(Node& root, double dt, Timing& timing) = 0;
+  /// Whether it solves Lagrangian constraints (FreeMotionAnimationLoop): constraint solvers and
+  /// constraint responses to contacts need such a loop.
+  virtual bool solvesConstraints() const { return false; }
 };
 
 /// Something that advances itself during a step, outside the ODE solvers (a scripted motion,

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "simulation/Constraints.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace stroma {
 
 std::size_t ConstraintRows::addGroup(ConstraintKind kind, std::span<const double> violations,
@@ -34,6 +37,35 @@ void ConstraintRows::clear() {
   m_violations.clear();
   for (std::size_t s = 0; s < m_usedStates; ++s) m_entries[s].clear();
   m_usedStates = 0;
+}
+
+ConstraintLawResiduals lawResiduals(const ConstraintProblem& problem, double coneSlack) {
+  ConstraintLawResiduals r;
+  const Eigen::VectorXd delta = problem.violation + problem.W * problem.lambda;
+  const Eigen::VectorXd& lambda = problem.lambda;
+  for (const ConstraintGroup& g : problem.groups) {
+    const auto i = static_cast<Eigen::Index>(g.firstRow);
+    switch (g.kind) {
+      case ConstraintKind::bilateral:
+        for (int k = 0; k < g.rowCount; ++k) r.bilateral = std::max(r.bilateral, std::abs(delta[i + k]));
+        break;
+      case ConstraintKind::unilateral:
+      case ConstraintKind::friction:
+        r.negativeForce = std::max(r.negativeForce, -lambda[i]);
+        r.penetration = std::max(r.penetration, -delta[i]);
+        r.complementarity = std::max(r.complementarity, std::abs(lambda[i] * delta[i]));
+        if (g.kind == ConstraintKind::friction) {
+          const double tangent = Eigen::Vector2d(lambda[i + 1], lambda[i + 2]).norm();
+          const double limit = g.mu * std::max(0.0, lambda[i]);
+          r.outsideCone = std::max(r.outsideCone, tangent - limit);
+          if (tangent < limit * (1 - coneSlack))
+            r.slipWhileInside = std::max(r.slipWhileInside,
+                                         Eigen::Vector2d(delta[i + 1], delta[i + 2]).norm());
+        }
+        break;
+    }
+  }
+  return r;
 }
 
 }  // namespace stroma

@@ -121,12 +121,40 @@ struct ConstraintSolveReport {
   double error = 0;  ///< the solver's measure of the remaining violation of the laws
 };
 
+/// One step's constraint problem and its solution: delta = violation + W lambda.
+struct ConstraintProblem {
+  Eigen::MatrixXd W;
+  Eigen::VectorXd violation;
+  std::vector<ConstraintGroup> groups;
+  Eigen::VectorXd lambda;
+};
+
+/// How far a solution is from its laws (each one 0 for an exact solution; lengths in the
+/// violations' unit, forces in the multipliers'):
+struct ConstraintLawResiduals {
+  double negativeForce = 0;    ///< largest -lambda_n (unilateral and friction normal rows)
+  double penetration = 0;      ///< largest -delta_n
+  double complementarity = 0;  ///< largest |lambda_n delta_n|
+  double outsideCone = 0;      ///< largest |lambda_t| - mu lambda_n
+  double slipWhileInside = 0;  ///< largest |delta_t| where |lambda_t| < mu lambda_n (sticking)
+  double bilateral = 0;        ///< largest |delta| of bilateral rows
+};
+/// Measures them for `problem` (independent of the solver that produced lambda).
+ConstraintLawResiduals lawResiduals(const ConstraintProblem& problem, double coneSlack = 1e-9);
+
 /// Finds lambda for delta = violation + W lambda with each group's law.
 class BaseConstraintSolver : public Base {
  public:
   virtual ConstraintSolveReport solve(const Eigen::MatrixXd& W, const Eigen::VectorXd& violation,
                                       std::span<const ConstraintGroup> groups,
                                       Eigen::VectorXd& lambda) = 0;
+
+  /// The last problem the animation loop gave it, with its solution (nullptr before any).
+  const ConstraintProblem* lastProblem() const { return m_lastProblem; }
+  void setLastProblem(const ConstraintProblem* problem) { m_lastProblem = problem; }
+
+ private:
+  const ConstraintProblem* m_lastProblem = nullptr;
 };
 
 }  // namespace stroma

@@ -2,9 +2,12 @@
 #include "CollisionResponse.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 
 #include "core/NameSuggestions.h"
 #include "core/Node.h"
+#include "simulation/AnimationLoop.h"
 
 namespace stroma {
 
@@ -12,14 +15,18 @@ namespace {
 
 constexpr const char* kPenalty = "PenalityContactForceField";
 
-// SOFA's constraint-based responses: the next step of contact (FreeMotionAnimationLoop).
-const std::vector<std::string> kConstraintResponses = {"FrictionContactConstraint",
-                                                       "StickContactConstraint",
-                                                       "FrictionContact",
-                                                       "StickContact",
-                                                       "BilateralContactConstraint",
-                                                       "AugmentedLagrangianResponseConstraint",
-                                                       "UnilateralContact"};
+// The constraint responses provided (SOFA's current and older names) and those that are not.
+const std::vector<std::string> kFriction = {"FrictionContactConstraint", "FrictionContact"};
+const std::vector<std::string> kStick = {"StickContactConstraint", "StickContact"};
+const std::vector<std::string> kNotProvided = {"BilateralContactConstraint",
+                                               "AugmentedLagrangianResponseConstraint",
+                                               "UnilateralContact"};
+
+bool among(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+bool needsConstraints(const std::string& name) { return among(kFriction, name) || among(kStick, name); }
 
 // The nearest node that holds both (or is an ancestor of both).
 Node* commonAncestor(Node* a, Node* b) {
@@ -27,6 +34,16 @@ Node* commonAncestor(Node* a, Node* b) {
     for (Node* y = b; y; y = y->parent())
       if (x == y) return x;
   return nullptr;
+}
+
+template <class D1, class D2>
+std::unique_ptr<ContactConstraintBase> makeConstraint(BaseMechanicalState* s1,
+                                                      BaseMechanicalState* s2,
+                                                      ContactConstraintBase::Law law) {
+  auto* t1 = dynamic_cast<MechanicalState<D1>*>(s1);
+  auto* t2 = dynamic_cast<MechanicalState<D2>*>(s2);
+  if (!t1 || !t2) return nullptr;
+  return std::make_unique<ContactConstraint<D1, D2>>(t1, t2, law);
 }
 
 template <class D1, class D2>
@@ -76,21 +93,30 @@ CollisionResponse::~CollisionResponse() = default;
 
 bool CollisionResponse::checkResponseName(const std::string& name, const Base& where,
                                           const std::string& field) {
-  if (name == kPenalty || name == "default") return true;
   std::string text;
-  if (std::find(kConstraintResponses.begin(), kConstraintResponses.end(), name) !=
-      kConstraintResponses.end()) {
-    text = "the response '" + name +
-           "' is a constraint-based response (FreeMotionAnimationLoop and a constraint solver), "
-           "which Stroma does not provide yet; available: '" +
-           kPenalty + "'";
+  if (name == kPenalty || name == "default") return true;
+  if (needsConstraints(name)) {
+    const Node* here = node();
+    const AnimationLoop* loop = here ? here->root().get<AnimationLoop>() : nullptr;
+    if (!here || (loop && loop->solvesConstraints())) return true;
+    text = "the response '" + name + "' gives Lagrangian constraints, which only "
+           "FreeMotionAnimationLoop solves: add <FreeMotionAnimationLoop/> and a constraint "
+           "solver (GenericConstraintSolver) to the root node" +
+           (loop ? " instead of its " + loop->className() : std::string()) +
+           ", or use the penalty response '" + kPenalty + "'";
   } else {
-    std::vector<std::string> known = kConstraintResponses;
-    known.push_back(kPenalty);
-    text = "unknown response '" + name + "'";
-    const auto near = nearestNames(name, known);
-    text += near.empty() ? "; available: '" + std::string(kPenalty) + "'"
-                         : "; did you mean " + quotedList(near) + "?";
+    std::vector<std::string> known{kPenalty};
+    known.insert(known.end(), kFriction.begin(), kFriction.end());
+    known.insert(known.end(), kStick.begin(), kStick.end());
+    const std::string available = "'" + std::string(kPenalty) + "', '" + kFriction[0] + "', '" +
+                                  kStick[0] + "'";
+    if (among(kNotProvided, name)) {
+      text = "the response '" + name + "' is not provided; available: " + available;
+    } else {
+      text = "unknown response '" + name + "'";
+      const auto near = nearestNames(name, known);
+      text += near.empty() ? "; available: " + available : "; did you mean " + quotedList(near) + "?";
+    }
   }
   if (&where == this)
     msgError(text, field);
@@ -99,47 +125,95 @@ bool CollisionResponse::checkResponseName(const std::string& name, const Base& w
   return false;
 }
 
-void CollisionResponse::init() {
-  checkResponseName(d_response.value(), *this, "response");
+// 'name=value' items separated by '&': mu and tol for the constraint responses.
+bool CollisionResponse::readResponseParams() {
   const std::string& params = d_responseParams.value();
-  if (!params.empty()) {
-    std::size_t start = 0;
-    while (start <= params.size()) {
-      const std::size_t end = std::min(params.find('&', start), params.size());
-      const std::string item = params.substr(start, end - start);
-      if (item.find('=') == std::string::npos || item.front() == '=')
-        msgError("expected 'name=value' items separated by '&', got '" + item + "'",
-                 "responseParams");
-      start = end + 1;
+  if (params.empty()) return true;
+  const bool constraints = needsConstraints(d_response.value());
+  std::size_t start = 0;
+  while (start <= params.size()) {
+    const std::size_t end = std::min(params.find('&', start), params.size());
+    const std::string item = params.substr(start, end - start);
+    start = end + 1;
+    const std::size_t eq = item.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      msgError("expected 'name=value' items separated by '&', got '" + item + "'",
+               "responseParams");
+      return false;
     }
-    if (isValid())
-      msgWarning("'" + params +
-                     "' has no meaning for the penalty response: the parameters "
-                     "are ignored",
+    const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
+    if (!constraints) continue;
+    if (key != "mu" && key != "tol") {
+      msgWarning("'" + key + "' is not a parameter of " + d_response.value() +
+                     " ('mu', 'tol'): ignored",
                  "responseParams");
-  }
-  // Models that name their own response.
-  if (Node* here = node())
-    for (Node* root = &here->root(); root;) {
-      std::vector<Node*> stack{root};
-      while (!stack.empty()) {
-        Node* n = stack.back();
-        stack.pop_back();
-        for (const auto& o : n->objects())
-          if (auto* model = dynamic_cast<CollisionModel*>(o.get()))
-            if (!model->d_contactResponse.value().empty())
-              checkResponseName(model->d_contactResponse.value(), *model, "contactResponse");
-        for (const auto& c : n->children()) stack.push_back(c.get());
+      continue;
+    }
+    char* rest = nullptr;
+    const double number = std::strtod(value.c_str(), &rest);
+    if (value.empty() || *rest != '\0' || !std::isfinite(number)) {
+      msgError("'" + key + "' must be a number, got '" + value + "'", "responseParams");
+      return false;
+    }
+    if (key == "mu") {
+      if (number < 0) {
+        msgError("the friction coefficient mu must be >= 0, got " + value, "responseParams");
+        return false;
       }
-      root = nullptr;
+      m_mu = number;
+      m_muSet = true;
     }
+  }
+  if (!constraints && isValid())
+    msgWarning("'" + params + "' has no meaning for the penalty response: the parameters are "
+               "ignored",
+               "responseParams");
+  return true;
 }
 
-const BaseForceField* CollisionResponse::responseOf(const CollisionModel& first,
-                                                    const CollisionModel& second) const {
+void CollisionResponse::init() {
+  checkResponseName(d_response.value(), *this, "response");
+  readResponseParams();
+  // Models that name their own response.
+  if (Node* here = node()) {
+    std::vector<Node*> stack{&here->root()};
+    while (!stack.empty()) {
+      Node* n = stack.back();
+      stack.pop_back();
+      for (const auto& o : n->objects())
+        if (auto* model = dynamic_cast<CollisionModel*>(o.get()))
+          if (!model->d_contactResponse.value().empty())
+            checkResponseName(model->d_contactResponse.value(), *model, "contactResponse");
+      for (const auto& c : n->children()) stack.push_back(c.get());
+    }
+  }
+}
+
+CollisionResponse::Kind CollisionResponse::kindOf(const CollisionModel& first,
+                                                  const CollisionModel& second) const {
+  const std::string* name = &d_response.value();
+  if (!first.d_contactResponse.value().empty()) name = &first.d_contactResponse.value();
+  else if (!second.d_contactResponse.value().empty()) name = &second.d_contactResponse.value();
+  if (among(kFriction, *name)) return Kind::friction;
+  if (among(kStick, *name)) return Kind::stick;
+  return Kind::penalty;
+}
+
+double CollisionResponse::frictionOf(const CollisionModel& first,
+                                     const CollisionModel& second) const {
+  if (m_muSet) return m_mu;
+  const bool set1 = first.d_contactFriction.isSet(), set2 = second.d_contactFriction.isSet();
+  if (set1 && set2) return first.d_contactFriction.value() * second.d_contactFriction.value();
+  if (set1) return first.d_contactFriction.value();
+  if (set2) return second.d_contactFriction.value();
+  return m_mu;
+}
+
+const Base* CollisionResponse::responseOf(const CollisionModel& first,
+                                          const CollisionModel& second) const {
   for (const Response& r : m_responses)
     if ((r.first == &first && r.second == &second) || (r.first == &second && r.second == &first))
-      return r.forceField;
+      return r.component;
   return nullptr;
 }
 
@@ -147,23 +221,45 @@ CollisionResponse::Response* CollisionResponse::createResponse(CollisionModel& f
                                                                CollisionModel& second) {
   BaseMechanicalState* s1 = first.state();
   BaseMechanicalState* s2 = second.state();
-  std::vector<PenaltyContact>* contacts = nullptr;
-  std::unique_ptr<BaseForceField> ff = makePenalty<Vec3Types, Vec3Types>(s1, s2, contacts);
-  if (!ff) ff = makePenalty<Vec3Types, Rigid3Types>(s1, s2, contacts);
-  if (!ff) ff = makePenalty<Rigid3Types, Vec3Types>(s1, s2, contacts);
-  if (!ff) ff = makePenalty<Rigid3Types, Rigid3Types>(s1, s2, contacts);
+  const Kind kind = kindOf(first, second);
+  Response response{&first, &second};
+  std::unique_ptr<Base> component;
+  if (kind == Kind::penalty) {
+    std::unique_ptr<BaseForceField> ff = makePenalty<Vec3Types, Vec3Types>(s1, s2, response.contacts);
+    if (!ff) ff = makePenalty<Vec3Types, Rigid3Types>(s1, s2, response.contacts);
+    if (!ff) ff = makePenalty<Rigid3Types, Vec3Types>(s1, s2, response.contacts);
+    if (!ff) ff = makePenalty<Rigid3Types, Rigid3Types>(s1, s2, response.contacts);
+    component = std::move(ff);
+  } else {
+    const auto law = kind == Kind::stick ? ContactConstraintBase::Law::stick
+                                         : ContactConstraintBase::Law::friction;
+    std::unique_ptr<ContactConstraintBase> c = makeConstraint<Vec3Types, Vec3Types>(s1, s2, law);
+    if (!c) c = makeConstraint<Vec3Types, Rigid3Types>(s1, s2, law);
+    if (!c) c = makeConstraint<Rigid3Types, Vec3Types>(s1, s2, law);
+    if (!c) c = makeConstraint<Rigid3Types, Rigid3Types>(s1, s2, law);
+    if (c) {
+      c->setFriction(kind == Kind::friction ? frictionOf(first, second) : 0.0);
+      response.constraint = c.get();
+      response.contacts = &c->contacts();
+    }
+    component = std::move(c);
+  }
   Node* where = commonAncestor(first.node(), second.node());
-  if (!ff || !where) {
-    msgError("no penalty response between the states of " + first.path() + " and " + second.path() +
-             " (Vec3d and Rigid3d states are supported)");
+  const char* className = kind == Kind::penalty  ? kPenalty
+                          : kind == Kind::stick ? "StickContactConstraint"
+                                                : "FrictionContactConstraint";
+  if (!component || !where) {
+    msgError(std::string("no ") + className + " response between the states of " + first.path() +
+             " and " + second.path() + " (Vec3d and Rigid3d states are supported)");
     return nullptr;
   }
-  ff->setName("penality" + std::to_string(m_created++) + "_" + first.name() + "_" + second.name());
-  ff->setClassName(kPenalty, std::string(s1->templateName()));
-  BaseForceField* raw = ff.get();
-  where->addObject(std::move(ff));
-  raw->init();
-  m_responses.push_back({&first, &second, raw, contacts, false});
+  const char* prefix = kind == Kind::penalty ? "penality" : "contact";
+  component->setName(prefix + std::to_string(m_created++) + "_" + first.name() + "_" + second.name());
+  component->setClassName(className, std::string(s1->templateName()));
+  response.component = component.get();
+  where->addObject(std::move(component));
+  response.component->init();
+  m_responses.push_back(response);
   return &m_responses.back();
 }
 
@@ -200,6 +296,17 @@ void CollisionResponse::updateResponses(std::span<const ModelPairContacts> conta
       const double r2 = g2.kind == PrimitiveKind::sphere ? g2.radius(c.primitive[1]) : 0.0;
       p.restDistance = d0 + r1 + r2;
       p.stiffness = p.restDistance != 0 ? k12 / p.restDistance : k12;
+    }
+    if (response->constraint) {
+      // Friction acts at a sphere's surface point: its offset from the centre turns a frame.
+      auto& offsets = response->constraint->surfaceOffsets();
+      offsets.resize(out.size());
+      for (std::size_t n = 0; n < out.size(); ++n) {
+        const Contact& c = pair.contacts[n];
+        const double r1 = g1.kind == PrimitiveKind::sphere ? g1.radius(c.primitive[0]) : 0.0;
+        const double r2 = g2.kind == PrimitiveKind::sphere ? g2.radius(c.primitive[1]) : 0.0;
+        offsets[n] = {Vec3d(r1 * c.normal), Vec3d(-r2 * c.normal)};
+      }
     }
   }
   for (Response& r : m_responses)

@@ -109,10 +109,16 @@ bool FreeMotionAnimationLoop::solveConstraints(Node& root, double dt, Timing& ti
   m_firstRows.push_back(m_rows.rowCount());
   const auto m = static_cast<Eigen::Index>(m_rows.rowCount());
   d_constraintRows.setValue(static_cast<int>(m));
+  if (m == 0) {
+    m_problem.W.resize(0, 0);
+    m_problem.violation.resize(0);
+    m_problem.lambda.resize(0);
+    m_problem.groups.clear();
+  }
   if (m == 0 || !m_solver) return true;
 
   // Each solver's rows, carried to its independent states, and its compliance.
-  m_W.setZero(m, m);
+  m_problem.W.setZero(m, m);
   std::vector<SolverSystem> systems;
   std::vector<Eigen::Triplet<double>> triplets;
   for (auto& [node, solver] : m_solvers) {
@@ -157,18 +163,20 @@ bool FreeMotionAnimationLoop::solveConstraints(Node& root, double dt, Timing& ti
                "constraintSolver");
       return false;
     }
-    system.correction->addCompliance(mop, system.response, system.H, m_W);
+    system.correction->addCompliance(mop, system.response, system.H, m_problem.W);
     systems.push_back(std::move(system));
   }
 
-  m_violation = Eigen::Map<const Eigen::VectorXd>(m_rows.violations().data(), m);
-  m_solver->solve(m_W, m_violation, m_rows.groups(), m_lambda);
+  m_problem.violation = Eigen::Map<const Eigen::VectorXd>(m_rows.violations().data(), m);
+  m_problem.groups.assign(m_rows.groups().begin(), m_rows.groups().end());
+  m_solver->solve(m_problem.W, m_problem.violation, m_problem.groups, m_problem.lambda);
+  m_solver->setLastProblem(&m_problem);
 
   for (SolverSystem& system : systems)
-    system.correction->applyCorrection(*system.mop, system.response, system.H, m_lambda);
+    system.correction->applyCorrection(*system.mop, system.response, system.H, m_problem.lambda);
   for (std::size_t c = 0; c < m_constraints.size(); ++c)
     m_constraints[c]->storeMultipliers(std::span<const double>(
-        m_lambda.data() + m_firstRows[c], m_firstRows[c + 1] - m_firstRows[c]));
+        m_problem.lambda.data() + m_firstRows[c], m_firstRows[c + 1] - m_firstRows[c]));
   return true;
 }
 

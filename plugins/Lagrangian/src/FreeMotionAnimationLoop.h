@@ -46,6 +46,7 @@ class FreeMotionAnimationLoop final : public AnimationLoop {
 
   void init() override;
   void step(Node& root, double dt, Timing& timing) override;
+  bool solvesConstraints() const override { return true; }
 
  private:
   struct SolverSystem;  // one ODE solver's operations, rows and correction this step
@@ -57,8 +58,7 @@ class FreeMotionAnimationLoop final : public AnimationLoop {
   std::vector<BaseLagrangianConstraint*> m_constraints;
   std::vector<std::size_t> m_firstRows;
   ConstraintRows m_rows;
-  Eigen::MatrixXd m_W;
-  Eigen::VectorXd m_violation, m_lambda;
+  ConstraintProblem m_problem;
 };
 
 }  // namespace stroma

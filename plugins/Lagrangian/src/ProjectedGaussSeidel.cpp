@@ -7,6 +7,36 @@
 
 namespace stroma::lagrangian {
 
+Eigen::Vector2d solveFrictionDisc(const Eigen::Matrix2d& B, const Eigen::Vector2d& c, double limit) {
+  if (!(limit > 0)) return Eigen::Vector2d::Zero();
+  const double det = B.determinant();
+  if (det > 0) {
+    const Eigen::Vector2d stick = -B.inverse() * c;
+    if (stick.norm() <= limit) return stick;
+  }
+  // Sliding: lambda_t = -k delta', delta' = c + B lambda_t, so lambda_t(k) = -k (I + k B)^-1 c,
+  // whose length grows with k from 0 (to |B^-1 c| > limit): bisection on log k, then one exact
+  // rescale onto the circle.
+  const double cn = c.norm();
+  if (!(cn > 0)) return Eigen::Vector2d::Zero();
+  auto at = [&](double k) -> Eigen::Vector2d {
+    const Eigen::Matrix2d A = Eigen::Matrix2d::Identity() + k * B;
+    return -k * (A.inverse() * c);
+  };
+  double low = 0, high = limit / cn;  // k = limit / |c| is the answer for B = 0
+  while (at(high).norm() < limit && high < 1e300) {
+    low = high;
+    high *= 4;
+  }
+  for (int i = 0; i < 100 && high - low > 1e-15 * high; ++i) {
+    const double mid = low > 0 ? std::sqrt(low * high) : 0.5 * high;
+    (at(mid).norm() < limit ? low : high) = mid;
+  }
+  const Eigen::Vector2d t = at(high);
+  const double n = t.norm();
+  return n > 0 ? Eigen::Vector2d(t * (limit / n)) : t;
+}
+
 ConstraintSolveReport solveProjectedGaussSeidel(const Eigen::MatrixXd& W,
                                                 const Eigen::VectorXd& violation,
                                                 std::span<const ConstraintGroup> groups,
@@ -43,13 +73,11 @@ ConstraintSolveReport solveProjectedGaussSeidel(const Eigen::MatrixXd& W,
           const double mu = settings.muOverride >= 0 ? settings.muOverride : g.mu;
           const double normal = std::max(0.0, lambda[r] - delta[r] / wrr);
           change(r, settings.sor * (normal - lambda[r]), largest);
-          // The tangent pair: sticking target from its 2 x 2 block, then onto the cone.
+          // The tangent pair: Coulomb's law on its 2 x 2 block of W with the others fixed.
           const Eigen::Matrix2d block = W.block<2, 2>(r + 1, r + 1);
-          Eigen::Vector2d t(lambda[r + 1], lambda[r + 2]);
+          const Eigen::Vector2d old(lambda[r + 1], lambda[r + 2]);
           const Eigen::Vector2d d(delta[r + 1], delta[r + 2]);
-          if (block.determinant() > 0) t -= block.inverse() * d;
-          const double limit = mu * lambda[r];
-          if (t.norm() > limit) t *= limit > 0 ? limit / t.norm() : 0.0;
+          const Eigen::Vector2d t = solveFrictionDisc(block, d - block * old, mu * lambda[r]);
           change(r + 1, settings.sor * (t[0] - lambda[r + 1]), largest);
           change(r + 2, settings.sor * (t[1] - lambda[r + 2]), largest);
           break;

@@ -6,9 +6,12 @@
 // others' multipliers fixed,
 //   bilateral:  lambda += -delta / W_rr,
 //   unilateral: lambda = max(0, lambda - delta / W_rr),
-//   friction:   the normal row as unilateral, then the tangent pair by its 2 x 2 block of W
-//               (sticking: delta_t = 0), projected onto the disc |lambda_t| <= mu lambda_n
-//               (sliding),
+//   friction:   the normal row as unilateral, then the tangent pair by its 2 x 2 block of W:
+//               sticking (delta_t = 0) when that force is inside the disc |lambda_t| <= mu
+//               lambda_n, else sliding (solveFrictionDisc: on the circle, opposite to the slip
+//               that results; projecting the sticking force onto the disc instead turns the
+//               friction away from the slip when the block is not isotropic, as at the corner
+//               of a rigid body, and a sliding box then yaws and brakes too little),
 // each change scaled by `sor` (over-relaxation), until no row's displacement W_rr dlambda_r
 // moves more than `tolerance` in a sweep.
 #pragma once
@@ -27,6 +30,12 @@ struct GaussSeidelSettings {
   /// When >= 0, every friction group uses this coefficient (LCPConstraintSolver's `mu`).
   double muOverride = -1;
 };
+
+/// Coulomb's law for one contact's tangent pair with the rest fixed: the post-slip is
+/// delta' = c + B lambda_t (B the pair's 2 x 2 block of W, c the slip at lambda_t = 0); returns
+/// the sticking lambda_t = -B^-1 c when |lambda_t| <= limit (= mu lambda_n), else the lambda_t
+/// on the circle |lambda_t| = limit opposite to delta' (maximal dissipation).
+Eigen::Vector2d solveFrictionDisc(const Eigen::Matrix2d& B, const Eigen::Vector2d& c, double limit);
 
 /// Solves delta = violation + W lambda with each group's law; `lambda` is the start (warm start)
 /// and the result.

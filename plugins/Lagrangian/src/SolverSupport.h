@@ -13,7 +13,7 @@ inline bool checkFreeMotionLoop(Base& solver) {
   const Node* node = solver.node();
   if (!node) return true;
   const AnimationLoop* loop = node->root().get<AnimationLoop>();
-  if (loop && loop->className() == "FreeMotionAnimationLoop") return true;
+  if (loop && loop->solvesConstraints()) return true;
   solver.msgError("solves Lagrangian constraints, which only FreeMotionAnimationLoop asks for: add "
                   "<FreeMotionAnimationLoop/> to the root node" +
                   std::string(loop ? " instead of its " + loop->className() : ""));

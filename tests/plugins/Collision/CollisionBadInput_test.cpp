@@ -84,11 +84,11 @@ INSTANTIATE_TEST_SUITE_P(
             "unknown response 'PenaltyContactForceField'; did you mean "
             "'PenalityContactForceField'?"},
         BadCollisionInput{
-            "a constraint response",
+            "a constraint response without FreeMotionAnimationLoop",
             "<CollisionPipeline/><BruteForceBroadPhase/><BVHNarrowPhase/>"
             "<MinProximityIntersection/>"
             "<CollisionResponse name=\"response\" response=\"FrictionContactConstraint\"/>",
-            "/root/response", "response", "is a constraint-based response"},
+            "/root/response", "response", "which only FreeMotionAnimationLoop solves"},
         BadCollisionInput{"a pipeline without its phases", "<CollisionPipeline name=\"pipeline\"/>",
                           "/root/pipeline", "",
                           "needs, in its node /root, a broad phase (BruteForceBroadPhase), an "
