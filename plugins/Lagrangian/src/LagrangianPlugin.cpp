@@ -4,6 +4,7 @@
 #include "GenericConstraintSolver.h"
 #include "LCPConstraintSolver.h"
 #include "LinearSolverConstraintCorrection.h"
+#include "PrecomputedConstraintCorrection.h"
 #include "UncoupledConstraintCorrection.h"
 #include "core/Plugin.h"
 
@@ -29,6 +30,10 @@ void registerComponents(stroma::PluginRegistry& registry) {
                "Compliance through the solver's own system and linear solver")
       .with<LinearSolverConstraintCorrection>()
       .alias("GenericConstraintCorrection");
+  registry.add("PrecomputedConstraintCorrection",
+               "Compliance of the solver's system computed once (cached on disk), turned with "
+               "the body; a precomputed model's own basis")
+      .with<PrecomputedConstraintCorrection>();
   registry.add("BilateralLagrangianConstraint", "Points or frames held together by multipliers")
       .with<BilateralLagrangianConstraint<Vec3Types>>("Vec3d")
       .with<BilateralLagrangianConstraint<Rigid3Types>>("Rigid3d")

@@ -64,6 +64,36 @@ std::uint64_t computeBasisKey(const std::vector<Eigen::Vector3d>& points,
   return hashVector(rowNodes, hash);
 }
 
+std::uint64_t computeComplianceKey(const SparseMatrix& A,
+                                   const std::vector<Eigen::Vector3d>& restPoints,
+                                   const std::vector<int>& fixedDofs,
+                                   const std::vector<int>& basisNodes,
+                                   const std::vector<double>& factors) {
+  // Another salt than computeBasisKey's: a stiffness basis and a compliance never share a key.
+  constexpr char kSalt[8] = {'S', 'T', 'R', 'M', 'C', 'M', 'P', '1'};
+  std::uint64_t hash = fnv1a64(kSalt, sizeof kSalt);
+  const std::int64_t sizes[3] = {A.rows(), A.cols(), A.nonZeros()};
+  hash = fnv1a64(sizes, sizeof sizes, hash);
+  // The compressed storage, in its order (a pattern and the values in it).
+  SparseMatrix compressed = A;
+  compressed.makeCompressed();
+  hash = fnv1a64(compressed.outerIndexPtr(), sizeof(int) * std::size_t(compressed.outerSize() + 1),
+                 hash);
+  hash =
+      fnv1a64(compressed.innerIndexPtr(), sizeof(int) * std::size_t(compressed.nonZeros()), hash);
+  hash = fnv1a64(compressed.valuePtr(), sizeof(double) * std::size_t(compressed.nonZeros()), hash);
+  hash = hashVector(restPoints, hash);
+  hash = hashVector(fixedDofs, hash);
+  hash = hashVector(basisNodes, hash);
+  return hashVector(factors, hash);
+}
+
+bool isBasisCacheFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[sizeof kMagic];
+  return in.read(magic, sizeof magic) && std::memcmp(magic, kMagic, sizeof kMagic) == 0;
+}
+
 std::uint64_t basisCacheBytes(const DeformationBasis& basis) {
   return sizeof(Header) + payloadBytesOf(basis.rowNodes().size(), basis.basisNodes().size());
 }

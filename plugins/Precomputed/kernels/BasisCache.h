@@ -32,6 +32,24 @@ std::uint64_t computeBasisKey(const std::vector<Eigen::Vector3d>& points,
                               double poissonRatio, const std::vector<int>& fixedDofs,
                               const std::vector<int>& basisNodes, const std::vector<int>& rowNodes);
 
+/// The cache key of a compliance basis: the columns of A^-1 for a solver's system matrix A
+/// (a constraint correction's precomputation, A = mFactor M + bFactor B + kFactor K with
+/// identity rows and columns on the fixed dofs). Hashes A's pattern and values (the mesh, the
+/// material, the masses, the time step and the solver's factors all enter them), the rest
+/// points the rotations are measured from, the fixed dofs, the basis nodes and `factors` (the
+/// solver's m, b, k factors and dt, already in A, hashed again so that a key never depends on
+/// the values happening to cancel). All bit-exact: any change gives another key. Differs from
+/// every computeBasisKey.
+std::uint64_t computeComplianceKey(const SparseMatrix& A,
+                                   const std::vector<Eigen::Vector3d>& restPoints,
+                                   const std::vector<int>& fixedDofs,
+                                   const std::vector<int>& basisNodes,
+                                   const std::vector<double>& factors);
+
+/// Whether `path` begins like a cache file of this format (its magic), whatever its key or
+/// content: a caller can then leave a file of another program alone instead of overwriting it.
+bool isBasisCacheFile(const std::string& path);
+
 /// Writes `basis` under `key` to `path` (through a temporary file of this process renamed at the
 /// end, so that an interrupted or concurrent write leaves no partial file under that name). false
 /// and `error` on failure.

@@ -43,7 +43,8 @@ bool checkNodes(const std::vector<int>& nodes, int nodeCount, const char* what,
 std::optional<DeformationBasis> DeformationBasis::compute(const SparseMatrix& K,
                                                           const std::vector<int>& fixedDofs,
                                                           const std::vector<int>& basisNodes,
-                                                          std::string& error) {
+                                                          std::string& error,
+                                                          FixedDofs rule) {
   if (K.rows() != K.cols() || K.rows() % 3 != 0 || K.rows() == 0) {
     error = "the stiffness matrix is " + std::to_string(K.rows()) + " x " +
             std::to_string(K.cols()) + ", expected 3n x 3n with n > 0 nodes";
@@ -51,7 +52,7 @@ std::optional<DeformationBasis> DeformationBasis::compute(const SparseMatrix& K,
   }
   const int dofCount = int(K.rows());
   const int nodeCount = dofCount / 3;
-  if (fixedDofs.empty()) {
+  if (fixedDofs.empty() && rule == FixedDofs::required) {
     error =
         "no fixed degree of freedom: the stiffness matrix is singular (rigid motions are "
         "free); fix at least three non-aligned nodes";

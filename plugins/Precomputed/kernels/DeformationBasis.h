@@ -43,14 +43,21 @@ using MatrixXd = Eigen::MatrixXd;
 
 class DeformationBasis {
  public:
+  /// Whether compute() needs fixed dofs: a stiffness K does (its rigid motions are singular);
+  /// a system with mass, M + h^2 K (a constraint correction's compliance), needs none.
+  enum class FixedDofs { required, optional };
+
   /// Factorises K_F once (Eigen's SimplicialLDLT) and solves for the 3k columns. `fixedDofs`:
   /// dof indices 3 node + c. `basisNodes`: distinct node indices in [0, n). Returns nullopt
   /// with `error` set when K is not square 3n x 3n, a dof or node is out of range or repeated,
-  /// or K_F is singular (no or too few fixed dofs, a node outside every element).
+  /// there is no fixed dof while `rule` requires some, or K_F is singular or indefinite (too
+  /// few fixed dofs, a node outside every element). K may be any symmetric positive definite
+  /// matrix once its fixed dofs are removed (the columns are then those of K_F^-1).
   static std::optional<DeformationBasis> compute(const SparseMatrix& K,
                                                  const std::vector<int>& fixedDofs,
                                                  const std::vector<int>& basisNodes,
-                                                 std::string& error);
+                                                 std::string& error,
+                                                 FixedDofs rule = FixedDofs::required);
 
   /// A basis from stored columns (a cache file): `columns` is 3 rowNodes.size() x 3
   /// basisNodes.size(), `fixedColumns` flags the columns of fixed dofs (3 basisNodes.size()).

@@ -12,6 +12,7 @@
 #include "SolidMechanics/kernels/IsotropicMaterial.h"
 #include "core/Message.h"
 #include "core/Node.h"
+#include "simulation/Constraints.h"
 #include "simulation/MechanicalOperations.h"
 #include "simulation/NodalForces.h"
 #include "simulation/ProjectiveConstraint.h"
@@ -317,6 +318,17 @@ void PrecomputedLinearModel::solve(MechanicalOperations& mop, double dt) {
   for (auto& v : m_state->writeDeriv(VecId::velocity())) v.setZero();
   if (!m_imposedNodes.empty()) d_reactionForces.setValue(m_reactions);
   mop.propagate(VecId::position(), VecId::velocity());
+}
+
+bool PrecomputedLinearModel::constraintResponse(double dt, ConstraintResponse& response) const {
+  // Quasi-static: K dx = f_c, the positions take the whole response at once, no velocity.
+  response.matrix = MechanicalParams{};
+  response.matrix.dt = dt;
+  response.matrix.mFactor = 0.0;
+  response.matrix.kFactor = -1.0;
+  response.positionFactor = 1.0;
+  response.velocityFactor = 0.0;
+  return true;
 }
 
 }  // namespace stroma

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "Precomputed/kernels/BasisSource.h"
 #include "Precomputed/kernels/DeformationBasis.h"
 #include "core/DataTraits.h"
 #include "core/Link.h"
@@ -43,7 +44,14 @@ struct EnumKeywords<DeformedRegion> {
 /// elements, material, fixed dofs, basis and row nodes: `cacheFile`, by default
 /// <temp dir>/stroma-precomputed/<key>.basis. A second run loads it; a corrupt, truncated or
 /// foreign file is reported, recomputed and rewritten.
-class PrecomputedLinearModel final : public OdeSolver {
+///
+/// Constraints (FreeMotionAnimationLoop): the model is static, so a constraint force f moves
+/// the positions by K^-1 f and leaves the velocities at zero (constraintResponse); the basis IS
+/// K^-1 on the basis nodes, and a PrecomputedConstraintCorrection in the node takes its
+/// compliance from it (BasisSource) with no other factorisation. Constraint forces are not
+/// remembered: each step starts again from rest plus the loads, and the constraints are solved
+/// anew from there.
+class PrecomputedLinearModel final : public OdeSolver, public precomputed::BasisSource {
  public:
   Data<double> d_youngModulus{this,
                               "youngModulus",
@@ -116,9 +124,12 @@ class PrecomputedLinearModel final : public OdeSolver {
   void init() override;
   void bwdInit() override;
   void solve(MechanicalOperations& mop, double dt) override;
+  /// Static: A = -K (mFactor 0, kFactor -1), dx = K^-1 f, no velocity.
+  bool constraintResponse(double dt, ConstraintResponse& response) const override;
 
   /// The basis in use (null until bwdInit succeeded).
   const precomputed::DeformationBasis* basis() const { return m_basis.get(); }
+  const precomputed::DeformationBasis* deformationBasis() const override { return m_basis.get(); }
 
  private:
   bool findTopology();
