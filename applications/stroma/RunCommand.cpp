@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "CommandLine.h"
+#include "core/PathResolver.h"
 #include "core/Runtime.h"
 #include "simulation/RunSummary.h"
 #include "simulation/Scene.h"
@@ -66,6 +67,39 @@ void printComponentSummaries(const Node& node) {
   for (const auto& child : node.children()) printComponentSummaries(*child);
 }
 
+/// The Data named by --print or --export-data ("/root/Probe/dofs.constraintForce", a leading
+/// '@' optional). Prints why and returns false when one is not found.
+bool resolveData(const Scene& scene, const std::vector<std::string>& paths, const char* option,
+                 std::vector<const BaseData*>& out) {
+  for (const std::string& path : paths) {
+    std::string error;
+    const std::string link = path.starts_with('@') ? path : "@" + path;
+    const BaseData* data = resolveDataPath(scene.root(), link, error);
+    if (!data) {
+      std::cerr << "stroma: " << option << " " << path << ": " << error << "\n";
+      return false;
+    }
+    out.push_back(data);
+  }
+  return true;
+}
+
+std::string dataName(const BaseData& data) {
+  return (data.owner() ? data.owner()->path() : std::string("?")) + "." + data.name();
+}
+
+/// One line per Data after each step: "step N time T PATH.field VALUE".
+void printData(const std::vector<const BaseData*>& printed, long long step, double time) {
+  for (const BaseData* data : printed)
+    std::printf("step %lld time %.17g %s %s\n", step, time, dataName(*data).c_str(),
+                data->valueText().c_str());
+}
+
+void captureData(const std::vector<const BaseData*>& exported, StateSnapshot& snapshot) {
+  for (const BaseData* data : exported)
+    snapshot.data.push_back({dataName(*data), data->typeName(), data->valueText()});
+}
+
 }  // namespace
 
 int runCommand(const std::vector<std::string>& args) {
@@ -73,7 +107,8 @@ int runCommand(const std::vector<std::string>& args) {
   std::string error;
   std::vector<std::string> valueOptions = kSceneOptions;
   valueOptions.insert(valueOptions.end(),
-                      {"-n", "--steps", "--dt", "--threads", "--export-state", "--export-every"});
+                      {"-n", "--steps", "--dt", "--threads", "--export-state", "--export-every", "--print",
+                       "--export-data"});
   if (!parseArguments(args, valueOptions, {"--verbose"}, a, error)) return usageError(error);
   long long steps = 100, threads = 0, exportEvery = 0;
   double dt = 0;
@@ -83,6 +118,8 @@ int runCommand(const std::vector<std::string>& args) {
     return usageError(error);
   if (exportEvery && !a.value("--export-state"))
     return usageError("--export-every needs --export-state FILE");
+  if (!a.values("--export-data").empty() && !a.value("--export-state"))
+    return usageError("--export-data needs --export-state FILE");
 
   Runtime runtime;
   Scene scene(runtime);
@@ -90,13 +127,22 @@ int runCommand(const std::vector<std::string>& args) {
   std::unique_ptr<std::ofstream> jsonFile;
   if (int code = loadScene(a, runtime, scene, jsonFile)) return code;
   if (dt <= 0) dt = scene.root().dt();
+  std::vector<const BaseData*> printed, exported;
+  if (!resolveData(scene, a.values("--print"), "--print", printed) ||
+      !resolveData(scene, a.values("--export-data"), "--export-data", exported))
+    return kBadInput;
+  auto snapshot = [&](long long step) {
+    StateSnapshot s = captureState(scene.root(), step);
+    captureData(exported, s);
+    return s;
+  };
 
   std::ofstream stateFile;
   if (const std::string* path = a.value("--export-state")) {
     stateFile.open(*path);
     if (!stateFile) return usageError("cannot write the state file '" + *path + "'");
     writeStateHeader(stateFile);
-    if (exportEvery) writeSnapshot(stateFile, captureState(scene.root(), 0));
+    if (exportEvery) writeSnapshot(stateFile, snapshot(0));
   }
 
   int code = kSuccess;
@@ -109,11 +155,12 @@ int runCommand(const std::vector<std::string>& args) {
       ++done;
       break;
     }
+    printData(printed, done + 1, scene.root().time());
     if (exportEvery && (done + 1) % exportEvery == 0 && done + 1 != steps)
-      writeSnapshot(stateFile, captureState(scene.root(), done + 1));
+      writeSnapshot(stateFile, snapshot(done + 1));
   }
   if (stateFile.is_open()) {
-    writeSnapshot(stateFile, captureState(scene.root(), done));
+    writeSnapshot(stateFile, snapshot(done));
     if (!stateFile.flush()) {
       std::cerr << "stroma: writing the state file failed\n";
       code = code ? code : kSimulationFailure;

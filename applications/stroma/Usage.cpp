@@ -22,6 +22,10 @@ const CommandHelp kCommands[] = {
       --export-state FILE           write every mechanical state at the end (state format:
                                     docs/state-format.md)
       --export-every K              ... and also every K steps (with step 0)
+      --export-data PATH.FIELD      ... with this Data in each snapshot (repeatable), e.g.
+                                    /root/Probe/dofs.constraintForce
+      --print PATH.FIELD            print this Data after each step (repeatable): the force
+                                    a haptic device renders, a solver's iterations...
 )", true},
     {"check", R"(  stroma check SCENE [options]      load a scene and report every problem, without running it
   stroma check --stability [--quick] [--csv FILE] [--save-scenes DIR]

@@ -80,6 +80,8 @@ void writeSnapshot(std::ostream& out, const StateSnapshot& snapshot) {
       out << '\n';
     }
   }
+  for (const DataRecord& d : snapshot.data)
+    out << "data " << d.name << " [" << d.typeName << "] " << d.text << '\n';
   out << "end\n";
   out.imbue(previous);
 }
@@ -133,6 +135,15 @@ bool readStateFile(std::istream& in, std::vector<StateSnapshot>& snapshots, std:
         }
       }
       current->states.push_back(std::move(r));
+    } else if (key == "data") {
+      if (!current) return fail("'data' before any 'snapshot'");
+      DataRecord d;
+      // The type name may hold spaces ("list of Rigid3d derivative"): it is in brackets.
+      if (!(words >> d.name) || !(words >> std::ws) || words.get() != '[' ||
+          !std::getline(words, d.typeName, ']'))
+        return fail("expected 'data PATH.field [TYPE] VALUE'");
+      std::getline(words >> std::ws, d.text);
+      current->data.push_back(std::move(d));
     } else if (key == "end") {
       current = nullptr;
     } else {

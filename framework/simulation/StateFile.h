@@ -12,7 +12,8 @@
 //
 // Each state line gives: path, template, count n, numbers per position, numbers per velocity;
 // n lines follow with the position then the velocity of one degree of freedom. Numbers are
-// written with 17 significant digits, so a file read back gives the same doubles.
+// written with 17 significant digits, so a file read back gives the same doubles. Data asked
+// for follow the states, one line each: "data PATH.field [TYPE] VALUE...".
 #pragma once
 
 #include <iosfwd>
@@ -35,10 +36,19 @@ struct StateRecord {
   }
 };
 
+/// A Data written beside the states (`stroma run --export-data PATH.field`): its full name, its
+/// type and its value as a scene attribute would write it.
+struct DataRecord {
+  std::string name;
+  std::string typeName;
+  std::string text;
+};
+
 struct StateSnapshot {
   double time = 0;
   long long step = 0;
   std::vector<StateRecord> states;
+  std::vector<DataRecord> data;
 };
 
 /// The states of every BaseState under `root`, in graph order.

@@ -31,6 +31,8 @@ struct VecId {
   static constexpr VecId dx() { return deriv(2); }
   static constexpr VecId freeVelocity() { return deriv(3); }
   static constexpr VecId externalForce() { return deriv(4); }
+  /// The force of the Lagrangian constraints at the last step (FreeMotionAnimationLoop).
+  static constexpr VecId constraintForce() { return deriv(5); }
 
   static constexpr int kFirstTemporary = 8;
 };

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "FreeMotionAnimationLoop.h"
 
+#include <algorithm>
+
 #include "collision/CollisionPipeline.h"
 #include "core/Node.h"
 #include "simulation/MechanicalOperations.h"
@@ -75,6 +77,13 @@ void FreeMotionAnimationLoop::step(Node& root, double dt, Timing& timing) {
       for (const auto& c : n->children()) stack.push_back(c.get());
     }
   }
+  // Collision on the positions of the step's start, as SOFA (its free motion writes separate
+  // free positions): a body moving more than the alarm distance per step is still caught
+  // before it passes through; the contacts' rows are then measured at the free positions.
+  if (CollisionPhase* collision = root.get<CollisionPhase>(); collision && collision->isValid()) {
+    ScopedPhase phase(timing, "collision");
+    collision->computeCollisions(root, timing);
+  }
   m_solvers.clear();
   collectSolvers(root);
   {
@@ -85,10 +94,6 @@ void FreeMotionAnimationLoop::step(Node& root, double dt, Timing& timing) {
       mop.projectVelocity(VecId::velocity());
       solver->solve(mop, dt);
     }
-  }
-  if (CollisionPhase* collision = root.get<CollisionPhase>(); collision && collision->isValid()) {
-    ScopedPhase phase(timing, "collision");
-    collision->computeCollisions(root, timing);
   }
   {
     ScopedPhase phase(timing, "constraints");
@@ -110,6 +115,7 @@ bool FreeMotionAnimationLoop::solveConstraints(Node& root, double dt, Timing& ti
   const auto m = static_cast<Eigen::Index>(m_rows.rowCount());
   d_constraintRows.setValue(static_cast<int>(m));
   if (m == 0) {
+    storeConstraintForces({});
     m_problem.W.resize(0, 0);
     m_problem.violation.resize(0);
     m_problem.lambda.resize(0);
@@ -174,10 +180,38 @@ bool FreeMotionAnimationLoop::solveConstraints(Node& root, double dt, Timing& ti
 
   for (SolverSystem& system : systems)
     system.correction->applyCorrection(*system.mop, system.response, system.H, m_problem.lambda);
+  storeConstraintForces(systems);
   for (std::size_t c = 0; c < m_constraints.size(); ++c)
     m_constraints[c]->storeMultipliers(std::span<const double>(
         m_problem.lambda.data() + m_firstRows[c], m_firstRows[c + 1] - m_firstRows[c]));
   return true;
+}
+
+// Each state's constraintForce: the rows' entries on it times lambda (a mapped collision
+// surface: the force at each contact point; an obstacle outside every solver: its reaction),
+// and on the independent states of each solver H_s^T lambda, the forces of all the rows carried
+// through the mappings (a rigid probe: the total force and torque, what a haptic device
+// renders). States that had a force at the last step and none now are set to zero.
+void FreeMotionAnimationLoop::storeConstraintForces(std::span<SolverSystem> systems) {
+  const Eigen::VectorXd& lambda = m_problem.lambda;
+  m_forcedNow.clear();
+  for (std::size_t s = 0; s < m_rows.states().size(); ++s) {
+    auto* state = const_cast<BaseMechanicalState*>(m_rows.states()[s]);
+    m_force.setZero(static_cast<Eigen::Index>(state->matrixSize()));
+    for (const ConstraintRows::Entry& e : m_rows.entriesOf(s))
+      m_force[static_cast<Eigen::Index>(e.dof)] += e.value * lambda[static_cast<Eigen::Index>(e.row)];
+    state->copyFromGlobal(VecId::constraintForce(), m_force, 0);
+    m_forcedNow.push_back(state);
+  }
+  for (SolverSystem& system : systems) {
+    m_force = system.H.transpose() * lambda;
+    system.mop->scatter(m_force, VecId::constraintForce());
+    for (BaseMechanicalState* state : system.mop->independentStates()) m_forcedNow.push_back(state);
+  }
+  for (BaseMechanicalState* state : m_forcedBefore)
+    if (std::find(m_forcedNow.begin(), m_forcedNow.end(), state) == m_forcedNow.end())
+      state->vOp(VecId::constraintForce(), VecId::null(), VecId::null(), 0.0);
+  std::swap(m_forcedBefore, m_forcedNow);
 }
 
 }  // namespace stroma

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "core/Data.h"
@@ -15,11 +16,14 @@ class MechanicalOperations;
 class OdeSolver;
 
 /// SOFA's FreeMotionAnimationLoop, in the root node: each step (Constraints.h)
-///   1. behavior models; free motion: every ODE solver integrates its states without the
-///      Lagrangian constraints;
-///   2. collision (when the root holds a collision pipeline), on the free positions: a
-///      constraint response (FrictionContactConstraint) turns the contacts into constraints;
-///   3. every Lagrangian constraint of the scene gives its rows and violations; the rows are
+///   1. behavior models; collision (when the root holds a collision pipeline), on the
+///      positions of the step's start (as SOFA): a constraint response
+///      (FrictionContactConstraint) turns the contacts into constraints;
+///   2. free motion: every ODE solver integrates its states without the Lagrangian
+///      constraints;
+///   3. every Lagrangian constraint of the scene gives its rows and violations (at the free
+///      positions: a contact's gap is measured there, with the primitives and weights of its
+///      detection); the rows are
 ///      carried to each solver's independent states through the mappings (H J);
 ///   4. each solver's constraint correction adds its compliance to W;
 ///   5. the constraint solver (`constraintSolver`, else the one in the root) finds the
@@ -52,6 +56,7 @@ class FreeMotionAnimationLoop final : public AnimationLoop {
   struct SolverSystem;  // one ODE solver's operations, rows and correction this step
   void collectSolvers(Node& node);
   bool solveConstraints(Node& root, double dt, Timing& timing);
+  void storeConstraintForces(std::span<SolverSystem> systems);
 
   BaseConstraintSolver* m_solver = nullptr;
   std::vector<std::pair<Node*, OdeSolver*>> m_solvers;
@@ -59,6 +64,8 @@ class FreeMotionAnimationLoop final : public AnimationLoop {
   std::vector<std::size_t> m_firstRows;
   ConstraintRows m_rows;
   ConstraintProblem m_problem;
+  Eigen::VectorXd m_force;
+  std::vector<BaseMechanicalState*> m_forcedBefore, m_forcedNow;
 };
 
 }  // namespace stroma

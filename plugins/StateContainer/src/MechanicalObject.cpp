@@ -99,6 +99,7 @@ void MechanicalObject<DataTypes>::init() {
   sizeDeriv(d_externalForce);
   sizeDeriv(d_derivX);
   sizeDeriv(d_freeVelocity);
+  sizeDeriv(d_constraintForce);
   auto sizeCoord = [&](Data<VecCoord>& d) {
     if (d.value().size() != n) {
       if (!d.value().empty())
@@ -151,6 +152,7 @@ Data<typename MechanicalObject<DataTypes>::VecDeriv>* MechanicalObject<DataTypes
     case 2: return &d_derivX;
     case 3: return &d_freeVelocity;
     case 4: return &d_externalForce;
+    case 5: return &d_constraintForce;
     default: return nullptr;
   }
 }

@@ -32,6 +32,12 @@ class MechanicalObject final : public MechanicalState<DataTypes> {
                                  {.unit = "N"}};
   Data<VecDeriv> d_derivX{this, "derivX", {}, "Position increment (dx) of the last solve.",
                           {.unit = "m"}};
+  Data<VecDeriv> d_constraintForce{this, "constraintForce", {},
+                                   "Output: the force of the Lagrangian constraints and contacts "
+                                   "on each degree of freedom at the last step (H^T lambda; "
+                                   "Rigid3d: force, then torque about the frame's origin), "
+                                   "what a haptic device renders.",
+                                   {.unit = "N", .output = true}};
   Data<VecCoord> d_restPosition{this, "rest_position", {},
                                 "Rest positions; the initial positions when not given.",
                                 {.unit = "m"}};

@@ -457,6 +457,36 @@ TEST(StromaCommand, RunExportsOnlyTheFinalStateWithoutExportEvery) {
   EXPECT_EQ(snapshots[0].step, 3);
 }
 
+TEST(StromaCommand, RunPrintsAndExportsDataAskedFor) {
+  // --print PATH.field prints a Data after each step; --export-data writes it in the snapshots,
+  // read back as written.
+  TempDir dir;
+  const fs::path states = dir.path() / "data.txt";
+  CommandResult r = runStroma({"run", "-n", "2", "--print", "/root/Points/dofs.velocity",
+                               "--export-state", states.string(), "--export-data",
+                               "@/root/Frame/frame.position", kKernelScene});
+  ASSERT_EQ(r.exitCode, 0) << show(r);
+  EXPECT_TRUE(has(r.out, "step 1 time 0.01 /root/Points/dofs.velocity ")) << show(r);
+  EXPECT_TRUE(has(r.out, "step 2 time 0.02 /root/Points/dofs.velocity ")) << show(r);
+  std::ifstream in(states);
+  std::vector<StateSnapshot> snapshots;
+  std::string error;
+  ASSERT_TRUE(readStateFile(in, snapshots, error)) << error;
+  ASSERT_EQ(snapshots.size(), 1u);
+  ASSERT_EQ(snapshots[0].data.size(), 1u);
+  EXPECT_EQ(snapshots[0].data[0].name, "/root/Frame/frame.position");
+  EXPECT_EQ(snapshots[0].data[0].text, "0 1 0 0 0 0 1");
+  EXPECT_FALSE(snapshots[0].data[0].typeName.empty());
+  // A Data that does not exist is bad input, named.
+  r = runStroma({"run", "-n", "2", "--print", "/root/Points/dofs.nothing", kKernelScene});
+  EXPECT_EQ(r.exitCode, 2) << show(r);
+  EXPECT_TRUE(has(r.err, "--print /root/Points/dofs.nothing")) << show(r);
+  EXPECT_TRUE(has(r.err, "no field 'nothing'")) << show(r);
+  r = runStroma({"run", "--export-data", "/root/Frame/frame.position", kKernelScene});
+  EXPECT_EQ(r.exitCode, 2) << show(r);
+  EXPECT_TRUE(has(r.err, "--export-data needs --export-state")) << show(r);
+}
+
 TEST(StromaCommand, RunOfABadSceneDoesNotRun) {
   TempDir dir;
   const fs::path scene = dir.write("bad.scn", R"(<Node><TestCounter increment="20"/></Node>)");
@@ -611,7 +641,7 @@ TEST(StromaCommand, DocOfAnUnknownComponentFailsWithASuggestion) {
   EXPECT_EQ(r.exitCode, 2) << show(r);
   EXPECT_TRUE(has(r.err, "unknown component 'MechanicalObjct'; did you mean 'MechanicalObject'?"))
       << show(r);
-  r = runStroma({"doc", "FreeMotionAnimationLoop"});
+  r = runStroma({"doc", "BeamFEMForceField"});
   EXPECT_EQ(r.exitCode, 2) << show(r);
   EXPECT_TRUE(has(r.err, "is a SOFA component that Stroma does not provide")) << show(r);
 }

@@ -134,13 +134,13 @@ TEST_F(SceneLoaderTest, UnnamedUnknownComponentIsNamedAfterItsClass) {
 TEST_F(SceneLoaderTest, SofaComponentThatStromaLacksIsSaidToBeOne) {
   EXPECT_FALSE(load(R"(<Node name="root">
   <MechanicalObject name="dofs" position="0 0 0"/>
-  <FreeMotionAnimationLoop name="loop"/>
+  <BeamFEMForceField name="loop"/>
 </Node>
 )"));
   ASSERT_EQ(scene.log().errorCount(), 1u) << describe(scene.log());
   const Message m =
-      error({"'FreeMotionAnimationLoop' is a SOFA component", "Stroma does not provide"});
-  expectPlace(m, file, 3, "/root/loop", "FreeMotionAnimationLoop", "");
+      error({"'BeamFEMForceField' is a SOFA component", "Stroma does not provide"});
+  expectPlace(m, file, 3, "/root/loop", "BeamFEMForceField", "");
 }
 
 TEST_F(SceneLoaderTest, UnknownAttributeSuggestsTheClosestField) {
@@ -357,7 +357,7 @@ TEST_F(SceneLoaderTest, EveryErrorOfTheSceneIsReported) {
   <TestCounter name="c" increment="much"/>
   <TestCounter name="d" mstate="@nothing"/>
   <TestLoader name="e" filename="missing.obj"/>
-  <FreeMotionAnimationLoop name="f"/>
+  <BeamFEMForceField name="f"/>
   <TestEngine name="g" input="@b.outptu"/>
   <TestInitCheck name="h" stiffness="-1"/>
 </Node>

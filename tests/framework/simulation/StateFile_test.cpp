@@ -194,6 +194,27 @@ TEST(StateFile, CommentsAndBlankLinesAreIgnored) {
   EXPECT_TRUE(readBack("").empty());
 }
 
+TEST(StateFile, DataLinesAreReadBackAsWritten) {
+  StateSnapshot s;
+  s.step = 2;
+  s.data.push_back({"/root/Probe/dofs.constraintForce", "list of Rigid3d derivative",
+                    "0 0 1.5 0 0 -0.25"});
+  const std::string text = written({s});
+  EXPECT_NE(text.find("data /root/Probe/dofs.constraintForce [list of Rigid3d derivative] 0 0 "
+                      "1.5 0 0 -0.25\n"),
+            std::string::npos)
+      << text;
+  const auto back = readBack(text);
+  ASSERT_EQ(back.size(), 1u);
+  ASSERT_EQ(back[0].data.size(), 1u);
+  EXPECT_EQ(back[0].data[0].name, s.data[0].name);
+  EXPECT_EQ(back[0].data[0].typeName, s.data[0].typeName);
+  EXPECT_EQ(back[0].data[0].text, s.data[0].text);
+  EXPECT_EQ(readError("snapshot time 0 step 0\ndata /a.b list 1 2\n"),
+            "line 2: expected 'data PATH.field [TYPE] VALUE'");
+  EXPECT_EQ(readError("data /a.b [real] 1\n"), "line 1: 'data' before any 'snapshot'");
+}
+
 TEST(StateFile, MalformedFilesNameTheLine) {
   EXPECT_EQ(readError("# stroma-state 1\nsnapshot time x step 1\n"),
             "line 2: expected 'snapshot time T step S'");

@@ -118,6 +118,14 @@ TEST_P(CoulombSlope, SticksBelowTheFrictionAngleAndSlidesAboveIt) {
   EXPECT_LT(std::abs(moved.dot(upSlope(theta))), 1e-9) << "left the slope's surface";
   EXPECT_LT(std::abs(moved.z()), 1e-9) << "drifted sideways";
   EXPECT_LT(v.angular.norm(), 1e-7) << "turned: " << v.angular.transpose();
+  // The contact force on the cube (its constraintForce: the force a haptic device would
+  // render): m (a - g), and no torque about its centre.
+  const auto& force = scene.root().findChild("Cube")->get<MechanicalState<Rigid3Types>>()->readDeriv(
+      VecId::constraintForce());
+  ASSERT_EQ(force.size(), 1u);
+  const Vec3d expectedForce = a * downSlope(theta) - Vec3d(0, -kG, 0);
+  EXPECT_LT((force[0].linear - expectedForce).norm(), 1e-6) << force[0].linear.transpose();
+  EXPECT_LT(force[0].angular.norm(), 1e-6) << force[0].angular.transpose();
   EXPECT_EQ(scene.log().count(MessageLevel::warning), 0u) << describe(scene.log());
 }
 
@@ -221,7 +229,7 @@ TEST(ContactConstraint, EverySolvedProblemMeetsItsLaws) {
     EXPECT_LT(r.slipWhileInside, 1e-8) << "step " << n;
   }
   EXPECT_GT(problems, 300u);
-  EXPECT_GE(largest, 20u) << "the pile should have many contacts at once";
+  EXPECT_GE(largest, 12u) << "the pile should have many contacts at once";
   // The cubes end at rest on the floor or on each other, above the floor.
   for (int i = 0; i < 6; ++i)
     EXPECT_GT(frameOf(scene, "Cube" + std::to_string(i)).center.y(), 0.1 - 1e-6) << i;
