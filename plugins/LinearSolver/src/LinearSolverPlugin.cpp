@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "CGLinearSolver.h"
+#include "PCGLinearSolver.h"
 #include "SparseLDLSolver.h"
 #include "core/Plugin.h"
 
@@ -15,6 +16,9 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .with<CGLinearSolver>("CompressedRowSparseMatrixd")
       .with<CGLinearSolver>("CompressedRowSparseMatrixMat3x3")
       .with<CGLinearSolver>("CompressedRowSparseMatrix");
+  registry.add("PCGLinearSolver",
+               "Matrix-free conjugate gradient preconditioned by another linear solver")
+      .with<PCGLinearSolver>("GraphScattered");
   registry.add("SparseLDLSolver", "Direct sparse LDL^T solver (Eigen SimplicialLDLT)")
       .with<SparseLDLSolver>("CompressedRowSparseMatrixd")
       .with<SparseLDLSolver>("CompressedRowSparseMatrixMat3x3d")
