@@ -42,6 +42,8 @@ class FreeMotionAnimationLoop final : public AnimationLoop {
   Data<bool> d_parallelCollisionDetectionAndFreeMotion{
       this, "parallelCollisionDetectionAndFreeMotion", false, "SOFA option, accepted."};
   Data<bool> d_parallelODESolving{this, "parallelODESolving", false, "SOFA option, accepted."};
+  Data<bool> d_computeBoundingBox{this, "computeBoundingBox", true,
+                                  "SOFA option, accepted: bounding boxes are for drawing."};
   Data<int> d_constraintRows{this, "constraintRows", 0,
                              "Output: constraint rows of the last step.", {.output = true}};
 

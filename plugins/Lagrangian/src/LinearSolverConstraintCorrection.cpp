@@ -40,6 +40,9 @@ void LinearSolverConstraintCorrection::addCompliance(
   mop.freeVec(rhs);
   mop.freeVec(solution);
   W += d_complianceFactor.value() * response.positionFactor * (H * m_U);
+  if (const double regularization = d_regularizationTerm.value(); regularization > 0)
+    for (Eigen::Index r = 0; r < H.rows(); ++r)
+      if (H.row(r).nonZeros() > 0) W(r, r) += regularization;
 }
 
 void LinearSolverConstraintCorrection::applyCorrection(

@@ -17,6 +17,7 @@ namespace stroma {
 ///   keeps one: SparseLDLSolver),   W += positionFactor complianceFactor H U,
 ///   dx = positionFactor complianceFactor U lambda,   dv = velocityFactor complianceFactor U
 ///   lambda.
+/// `regularizationTerm` is added to W's diagonal on the rows that act on these states.
 /// The linear solver is the `linearSolver` link, else the one in the ODE solver's node.
 class LinearSolverConstraintCorrection final : public BaseConstraintCorrection {
  public:
@@ -26,6 +27,13 @@ class LinearSolverConstraintCorrection final : public BaseConstraintCorrection {
   Data<double> d_complianceFactor{this, "complianceFactor", 1.0,
                                   "Factor of the compliance (and of the correction).",
                                   {.min = 0.0}};
+  Data<double> d_regularizationTerm{this,
+                                    "regularizationTerm",
+                                    0.0,
+                                    "Added to the diagonal of W on the rows acting on this body "
+                                    "(a redundant or singular set of constraints becomes "
+                                    "solvable).",
+                                    {.unit = "m/N", .min = 0.0}};
   Data<bool> d_wireOptimization{this, "wire_optimization", false, "SOFA option, accepted."};
   Data<std::string> d_solverName{this, "solverName", "", "SOFA's older name of linearSolver: "
                                                          "accepted, the node's solver is used."};
