@@ -39,6 +39,24 @@ void ConstraintRows::clear() {
   m_usedStates = 0;
 }
 
+std::array<Vec3d, 3> contactFrame(const Vec3d& n) {
+  // The axis least aligned with n gives a well-conditioned first tangent.
+  const Vec3d helper = std::abs(n.x()) < 0.6 ? Vec3d::UnitX() : Vec3d::UnitY();
+  const Vec3d t1 = n.cross(helper).normalized();
+  return {n, t1, n.cross(t1)};
+}
+
+std::size_t addContactGroup(ConstraintRows& rows, const std::array<Vec3d, 3>& frame, double gap,
+                            const Vec3d& slip, double mu, int& rowCount) {
+  if (!(mu > 0)) {
+    rowCount = 1;
+    return rows.addGroup(ConstraintKind::unilateral, std::span<const double>(&gap, 1));
+  }
+  rowCount = 3;
+  const std::array<double, 3> violations{gap, frame[1].dot(slip), frame[2].dot(slip)};
+  return rows.addGroup(ConstraintKind::friction, violations, mu);
+}
+
 ConstraintLawResiduals lawResiduals(const ConstraintProblem& problem, double coneSlack) {
   ConstraintLawResiduals r;
   const Eigen::VectorXd delta = problem.violation + problem.W * problem.lambda;

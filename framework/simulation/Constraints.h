@@ -16,6 +16,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <Eigen/SparseCore>
 #include <cstddef>
 #include <span>
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include "core/Base.h"
+#include "core/Types.h"
 #include "simulation/VecId.h"
 
 namespace stroma {
@@ -77,6 +79,16 @@ class ConstraintRows {
   std::vector<std::vector<Entry>> m_entries;  // per state
   std::size_t m_usedStates = 0;
 };
+
+/// An orthonormal frame (n, t1, t2) completing the unit normal n (t1, t2 the tangents of a
+/// contact's friction rows).
+std::array<Vec3d, 3> contactFrame(const Vec3d& n);
+
+/// Adds the group of one contact with the frame (n, t1, t2): with mu > 0 a friction group of
+/// three rows (violations gap, t1.slip, t2.slip; slip the tangential displacement over the
+/// step), else the unilateral normal row alone. Returns its first row; `rowCount` gets 3 or 1.
+std::size_t addContactGroup(ConstraintRows& rows, const std::array<Vec3d, 3>& frame, double gap,
+                            const Vec3d& slip, double mu, int& rowCount);
 
 /// A constraint with Lagrange multipliers: a contact response, points held together, a point
 /// on a plane... Any component of the scene; FreeMotionAnimationLoop asks them all.

@@ -23,13 +23,6 @@ Vec3d weighted(const PenaltyContact& c, int side, const Vector& values) {
   return p;
 }
 
-// Two unit tangents completing n to an orthonormal frame.
-void tangents(const Vec3d& n, Vec3d& t1, Vec3d& t2) {
-  const Vec3d helper = std::abs(n.x()) < 0.6 ? Vec3d::UnitX() : Vec3d::UnitY();
-  t1 = n.cross(helper).normalized();
-  t2 = n.cross(t1);
-}
-
 // The entries of one row on one side: the direction on the weighted vertices, and on a frame
 // (derivSize 6) the moment arm x direction on its rotation.
 template <class DataTypes>
@@ -72,12 +65,10 @@ void ContactConstraint<D1, D2>::buildConstraintRows(ConstraintRows& rows, double
   const auto& x2 = m_state2->readCoord(VecId::position());
   const auto& v1 = m_state1->readDeriv(VecId::velocity());
   const auto& v2 = m_state2->readDeriv(VecId::velocity());
-  const int count = rowsPerContact();
   for (std::size_t i = 0; i < m_contacts.size(); ++i) {
     const PenaltyContact& c = m_contacts[i];
     auto& frame = m_frames[i];
-    frame[0] = c.normal;
-    tangents(c.normal, frame[1], frame[2]);
+    frame = contactFrame(c.normal);
     // The normal row acts at the point the penalty response uses (a sphere's centre: its force
     // goes through it); friction at the surface point (a sphere's centre plus its offset).
     const Vec3d arm1 = worldArm(x1[c.vertices[0][0]], c.arm[0]);
@@ -88,20 +79,18 @@ void ContactConstraint<D1, D2>::buildConstraintRows(ConstraintRows& rows, double
     const Vec3d velocity1 = weighted(c, 0, v1) + angularOf(v1[c.vertices[0][0]]).cross(surface1);
     const Vec3d velocity2 = weighted(c, 1, v2) + angularOf(v2[c.vertices[1][0]]).cross(surface2);
     const Vec3d slip = dt * (velocity2 - velocity1);
-    const std::array<double, 3> violations{c.normal.dot(gap) - c.restDistance,
-                                           frame[1].dot(slip), frame[2].dot(slip)};
+    const double normalGap = c.normal.dot(gap) - c.restDistance;
     std::size_t first = 0;
+    int count = 3;
     if (m_law == Law::stick) {
+      const std::array<double, 3> violations{normalGap, frame[1].dot(slip), frame[2].dot(slip)};
       for (int r = 0; r < 3; ++r) {
         const std::size_t row =
             rows.addGroup(ConstraintKind::bilateral, std::span<const double>(&violations[r], 1));
         if (r == 0) first = row;
       }
-    } else if (count == 1) {
-      first = rows.addGroup(ConstraintKind::unilateral,
-                            std::span<const double>(violations.data(), 1));
     } else {
-      first = rows.addGroup(ConstraintKind::friction, violations, m_mu);
+      first = addContactGroup(rows, frame, normalGap, slip, m_mu, count);
     }
     for (int r = 0; r < count; ++r) {
       const Vec3d& direction = frame[static_cast<std::size_t>(r)];

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "IndexChecks.h"
+#include "core/IndexChecks.h"
 #include "core/Node.h"
 
 namespace stroma {

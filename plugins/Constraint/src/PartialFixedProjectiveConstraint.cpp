@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "PartialFixedProjectiveConstraint.h"
 
-#include "IndexChecks.h"
+#include "core/IndexChecks.h"
 
 namespace stroma {
 

@@ -3,29 +3,15 @@
 
 #include <array>
 
-#include "core/Node.h"
+#include "StateLinks.h"
+#include "core/IndexChecks.h"
 
 namespace stroma {
 
 template <class DataTypes>
-typename BilateralLagrangianConstraint<DataTypes>::State*
-BilateralLagrangianConstraint<DataTypes>::resolve(const Link<Base>& link, const char* field) {
-  Base* target = link.get();
-  if (!link) target = node() ? node()->template get<State>() : nullptr;
-  if (auto* n = dynamic_cast<Node*>(target)) target = n->template get<State>();
-  auto* state = dynamic_cast<State*>(target);
-  if (!state)
-    msgError(std::string("needs a ") + DataTypes::name + " mechanical state: " +
-                 (link ? link->path() + " is not one (nor a node holding one)"
-                       : std::string("none in its node; give ") + field),
-             field);
-  return state;
-}
-
-template <class DataTypes>
 void BilateralLagrangianConstraint<DataTypes>::init() {
-  m_state1 = resolve(l_object1, "object1");
-  m_state2 = l_object2 ? resolve(l_object2, "object2") : m_state1;
+  m_state1 = lagrangian::resolveState<DataTypes>(*this, l_object1, "object1");
+  m_state2 = l_object2 ? lagrangian::resolveState<DataTypes>(*this, l_object2, "object2") : m_state1;
   if (!m_state1 || !m_state2) return;
   const auto& first = d_firstPoint.value();
   const auto& second = d_secondPoint.value();
@@ -35,16 +21,8 @@ void BilateralLagrangianConstraint<DataTypes>::init() {
              "second_point");
     return;
   }
-  for (std::size_t k = 0; k < first.size(); ++k) {
-    if (first[k] >= m_state1->size())
-      msgError("point " + std::to_string(first[k]) + " is out of range of the " +
-                   std::to_string(m_state1->size()) + " points of " + m_state1->path(),
-               "first_point");
-    if (second[k] >= m_state2->size())
-      msgError("point " + std::to_string(second[k]) + " is out of range of the " +
-                   std::to_string(m_state2->size()) + " points of " + m_state2->path(),
-               "second_point");
-  }
+  reportIndicesOutOfRange(*this, first, m_state1->size(), "first_point");
+  reportIndicesOutOfRange(*this, second, m_state2->size(), "second_point");
   if constexpr (kRigid) {
     m_orientationOffsets.assign(first.size(), Quat::Identity());
     if (d_keepOrientationDifference.value() && isValid()) {

@@ -44,8 +44,6 @@ class BilateralLagrangianConstraint final : public BaseLagrangianConstraint {
   void storeMultipliers(std::span<const double> lambda) override;
 
  private:
-  State* resolve(const Link<Base>& link, const char* field);
-
   State* m_state1 = nullptr;
   State* m_state2 = nullptr;
   std::vector<Quat> m_orientationOffsets;  // keepOrientationDifference: q2_0 q1_0^-1 per pair

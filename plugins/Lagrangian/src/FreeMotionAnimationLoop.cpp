@@ -19,7 +19,8 @@ struct FreeMotionAnimationLoop::SolverSystem {
   std::unique_ptr<MechanicalOperations> mop;
   BaseConstraintCorrection* correction = nullptr;
   ConstraintResponse response;
-  RowMatrix H;
+  RowMatrix H;          // the rows on the system's dofs, fixed columns dropped
+  RowMatrix forceRows;  // the same with every column, for the forces on the states
 };
 
 FreeMotionAnimationLoop::FreeMotionAnimationLoop() = default;
@@ -147,29 +148,35 @@ bool FreeMotionAnimationLoop::solveConstraints(Node& root, double dt, Timing& ti
       system.H += RowMatrix(onState * mop.totalJacobian(state));
       any = true;
     }
-    if (!any || system.H.nonZeros() == 0) continue;
-    // Fixed degrees of freedom do not move: their columns go.
+    if (!any) continue;
+    // The forces on the states are H^T lambda with every column (an instrument moved by an
+    // imposed motion feels its contacts); the compliance and the correction leave out the
+    // columns of fixed dofs, which do not move. A solver whose rows are all on fixed dofs takes
+    // no part in the solve.
+    system.forceRows = system.H;
     std::vector<char> fixed;
     mop.fixedGlobalRows(fixed);
     system.H.prune([&](Eigen::Index, Eigen::Index col, double) {
       return !fixed[static_cast<std::size_t>(col)];
     });
-    system.correction = findCorrection(*node, true);
-    if (!system.correction) {
-      msgError("the states of " + node->path() + " have constraint rows (contacts or "
-               "constraints) but no constraint correction: add UncoupledConstraintCorrection or "
-               "LinearSolverConstraintCorrection beside its solver " + solver->path(),
-               "constraintSolver");
-      return false;
+    if (system.H.nonZeros() > 0) {
+      system.correction = findCorrection(*node, true);
+      if (!system.correction) {
+        msgError("the states of " + node->path() + " have constraint rows (contacts or "
+                 "constraints) but no constraint correction: add UncoupledConstraintCorrection "
+                 "or LinearSolverConstraintCorrection beside its solver " + solver->path(),
+                 "constraintSolver");
+        return false;
+      }
+      if (!solver->constraintResponse(dt, system.response)) {
+        msgError(solver->path() + " (" + solver->className() + ") cannot answer constraint "
+                 "forces (forward Euler moves positions with the old velocities): use "
+                 "EulerImplicitSolver or symplectic EulerExplicitSolver",
+                 "constraintSolver");
+        return false;
+      }
+      system.correction->addCompliance(mop, system.response, system.H, m_problem.W);
     }
-    if (!solver->constraintResponse(dt, system.response)) {
-      msgError(solver->path() + " (" + solver->className() + ") cannot answer constraint "
-               "forces (forward Euler moves positions with the old velocities): use "
-               "EulerImplicitSolver or symplectic EulerExplicitSolver",
-               "constraintSolver");
-      return false;
-    }
-    system.correction->addCompliance(mop, system.response, system.H, m_problem.W);
     systems.push_back(std::move(system));
   }
 
@@ -179,7 +186,8 @@ bool FreeMotionAnimationLoop::solveConstraints(Node& root, double dt, Timing& ti
   m_solver->setLastProblem(&m_problem);
 
   for (SolverSystem& system : systems)
-    system.correction->applyCorrection(*system.mop, system.response, system.H, m_problem.lambda);
+    if (system.correction)
+      system.correction->applyCorrection(*system.mop, system.response, system.H, m_problem.lambda);
   storeConstraintForces(systems);
   for (std::size_t c = 0; c < m_constraints.size(); ++c)
     m_constraints[c]->storeMultipliers(std::span<const double>(
@@ -204,7 +212,7 @@ void FreeMotionAnimationLoop::storeConstraintForces(std::span<SolverSystem> syst
     m_forcedNow.push_back(state);
   }
   for (SolverSystem& system : systems) {
-    m_force = system.H.transpose() * lambda;
+    m_force = system.forceRows.transpose() * lambda;
     system.mop->scatter(m_force, VecId::constraintForce());
     for (BaseMechanicalState* state : system.mop->independentStates()) m_forcedNow.push_back(state);
   }

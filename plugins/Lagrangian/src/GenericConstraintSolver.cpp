@@ -9,9 +9,11 @@ namespace stroma {
 void GenericConstraintSolver::init() {
   lagrangian::checkFreeMotionLoop(*this);
   const std::string& method = d_resolutionMethod.value();
-  if (method != "ProjectedGaussSeidel" && method != "UnbuiltGaussSeidel")
+  m_conjugateGradient = method == "NonsmoothNonlinearConjugateGradient";
+  if (method != "ProjectedGaussSeidel" && method != "UnbuiltGaussSeidel" && !m_conjugateGradient)
     msgError("resolutionMethod '" + method +
-                 "' is not provided; use ProjectedGaussSeidel or UnbuiltGaussSeidel",
+                 "' is not one of ProjectedGaussSeidel, UnbuiltGaussSeidel, "
+                 "NonsmoothNonlinearConjugateGradient",
              "resolutionMethod");
 }
 
@@ -31,7 +33,9 @@ ConstraintSolveReport GenericConstraintSolver::solve(const Eigen::MatrixXd& W,
                                                  .tolerance = d_tolerance.value(),
                                                  .sor = d_sor.value()};
   const ConstraintSolveReport report =
-      lagrangian::solveProjectedGaussSeidel(W, violation, groups, settings, lambda);
+      m_conjugateGradient
+          ? lagrangian::solveNonsmoothConjugateGradient(W, violation, groups, settings, lambda)
+          : lagrangian::solveProjectedGaussSeidel(W, violation, groups, settings, lambda);
   m_last = lambda;
   ++m_solves;
   d_currentIterations.setValue(report.iterations);

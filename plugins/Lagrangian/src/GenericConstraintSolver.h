@@ -13,11 +13,20 @@ namespace stroma {
 /// SOFA's GenericConstraintSolver (and its newer names BlockGaussSeidelConstraintSolver,
 /// ProjectedGaussSeidelConstraintSolver, UnbuiltGaussSeidelConstraintSolver): the constraint
 /// problem of Constraints.h by projected Gauss-Seidel over the groups of rows
-/// (ProjectedGaussSeidel.h), warm-started with the last step's multipliers when the rows are
-/// the same in number. Reports its iterations and error (outputs), and warns when it stops
-/// unconverged (the first time; later ones are counted at the end).
-class GenericConstraintSolver final : public BaseConstraintSolver {
+/// (ProjectedGaussSeidel.h), or by the nonsmooth nonlinear conjugate gradient over those sweeps
+/// (resolutionMethod NonsmoothNonlinearConjugateGradient; NNCGConstraintSolver), warm-started
+/// with the last step's multipliers when the rows are the same in number. Reports its
+/// iterations and error (outputs), and warns when it stops unconverged (the first time; later
+/// ones are counted at the end).
+class GenericConstraintSolver : public BaseConstraintSolver {
+ protected:
+  /// The default resolutionMethod (NNCGConstraintSolver's differs).
+  const char* m_initialMethod = "ProjectedGaussSeidel";
+  explicit GenericConstraintSolver(const char* method) : m_initialMethod(method) {}
+
  public:
+  GenericConstraintSolver() = default;
+
   Data<int> d_maxIterations{this, "maxIterations", 1000, "Largest number of Gauss-Seidel sweeps.",
                             {.min = 1.0}};
   Data<double> d_tolerance{this, "tolerance", 0.001,
@@ -26,11 +35,9 @@ class GenericConstraintSolver final : public BaseConstraintSolver {
                            {.unit = "m", .min = 0.0}};
   Data<double> d_sor{this, "sor", 1.0, "Over-relaxation factor of the sweeps.",
                      {.min = 0.0, .max = 2.0}};
-  Data<std::string> d_resolutionMethod{this, "resolutionMethod", "ProjectedGaussSeidel",
-                                       "SOFA option: ProjectedGaussSeidel, UnbuiltGaussSeidel "
-                                       "(the same sweeps here) or "
-                                       "NonsmoothNonlinearConjugateGradient (refused: not "
-                                       "provided)."};
+  Data<std::string> d_resolutionMethod{this, "resolutionMethod", m_initialMethod,
+                                       "ProjectedGaussSeidel, UnbuiltGaussSeidel (the same "
+                                       "sweeps here) or NonsmoothNonlinearConjugateGradient."};
   Data<bool> d_scaleTolerance{this, "scaleTolerance", true, "SOFA option, accepted."};
   Data<bool> d_allVerified{this, "allVerified", false, "SOFA option, accepted."};
   Data<bool> d_computeConstraintForces{this, "computeConstraintForces", false,
@@ -54,6 +61,15 @@ class GenericConstraintSolver final : public BaseConstraintSolver {
  private:
   Eigen::VectorXd m_last;  // the last multipliers, for the warm start
   long long m_solves = 0, m_unconverged = 0;
+  bool m_conjugateGradient = false;
+};
+
+/// SOFA's NNCGConstraintSolver: GenericConstraintSolver with the nonsmooth nonlinear conjugate
+/// gradient (ProjectedGaussSeidel.h): the projected Gauss-Seidel sweeps accelerated by a
+/// Fletcher-Reeves momentum, restarted when it stops helping.
+class NNCGConstraintSolver final : public GenericConstraintSolver {
+ public:
+  NNCGConstraintSolver() : GenericConstraintSolver("NonsmoothNonlinearConjugateGradient") {}
 };
 
 }  // namespace stroma

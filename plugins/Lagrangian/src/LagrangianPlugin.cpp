@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "BilateralLagrangianConstraint.h"
+#include "FixedLagrangianConstraint.h"
 #include "FreeMotionAnimationLoop.h"
 #include "GenericConstraintSolver.h"
 #include "LCPConstraintSolver.h"
 #include "LinearSolverConstraintCorrection.h"
+#include "MouseSettings.h"
 #include "PrecomputedConstraintCorrection.h"
+#include "SlidingLagrangianConstraint.h"
 #include "UncoupledConstraintCorrection.h"
+#include "UnilateralLagrangianConstraint.h"
 #include "core/Plugin.h"
 
 namespace {
@@ -21,6 +25,10 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .alias("BlockGaussSeidelConstraintSolver")
       .alias("ProjectedGaussSeidelConstraintSolver")
       .alias("UnbuiltGaussSeidelConstraintSolver");
+  registry.add("NNCGConstraintSolver",
+               "Constraint problem by the nonsmooth nonlinear conjugate gradient over "
+               "Gauss-Seidel sweeps")
+      .with<NNCGConstraintSolver>();
   registry.add("LCPConstraintSolver", "Contact problem with one friction coefficient")
       .with<LCPConstraintSolver>();
   registry.add("UncoupledConstraintCorrection",
@@ -38,6 +46,21 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .with<BilateralLagrangianConstraint<Vec3Types>>("Vec3d")
       .with<BilateralLagrangianConstraint<Rigid3Types>>("Rigid3d")
       .alias("BilateralInteractionConstraint");
+  registry.add("FixedLagrangianConstraint", "Points or frames held where they start by multipliers")
+      .with<FixedLagrangianConstraint<Vec3Types>>("Vec3d")
+      .with<FixedLagrangianConstraint<Rigid3Types>>("Rigid3d");
+  registry.add("SlidingLagrangianConstraint", "A point sliding along a segment of two points")
+      .with<SlidingLagrangianConstraint>("Vec3d")
+      .alias("SlidingConstraint");
+  registry.add("UnilateralLagrangianConstraint",
+               "Points kept beyond others along a direction, with Coulomb friction")
+      .with<UnilateralLagrangianConstraint>("Vec3d")
+      .alias("UnilateralInteractionConstraint");
+  registry.add("AttachBodyButtonSetting", "Viewer's mouse: drag a picked body by a spring")
+      .with<AttachBodyButtonSetting>();
+  registry.add("ConstraintAttachButtonSetting",
+               "Viewer's mouse: drag a picked body by a bilateral constraint")
+      .with<ConstraintAttachButtonSetting>();
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "CorrectionSupport.h"
-#include "IndexChecks.h"
+#include "core/IndexChecks.h"
 #include "Precomputed/kernels/BasisCache.h"
 #include "Precomputed/kernels/BasisSource.h"
 #include "core/Node.h"

@@ -37,6 +37,49 @@ Eigen::Vector2d solveFrictionDisc(const Eigen::Matrix2d& B, const Eigen::Vector2
   return n > 0 ? Eigen::Vector2d(t * (limit / n)) : t;
 }
 
+double gaussSeidelSweep(const Eigen::MatrixXd& W, std::span<const ConstraintGroup> groups,
+                        const GaussSeidelSettings& settings, Eigen::VectorXd& lambda,
+                        Eigen::VectorXd& delta, bool backward) {
+  double largest = 0;
+  auto change = [&](Eigen::Index r, double dl) {
+    if (dl == 0) return;
+    lambda[r] += dl;
+    delta += W.col(r) * dl;
+    largest = std::max(largest, std::abs(W(r, r) * dl));
+  };
+  const std::size_t count = groups.size();
+  for (std::size_t k = 0; k < count; ++k) {
+    const ConstraintGroup& g = groups[backward ? count - 1 - k : k];
+    const auto r = static_cast<Eigen::Index>(g.firstRow);
+    const double wrr = W(r, r);
+    if (!(wrr > 0)) continue;  // a row nothing can move: left at zero
+    switch (g.kind) {
+      case ConstraintKind::bilateral:
+        change(r, -settings.sor * delta[r] / wrr);
+        break;
+      case ConstraintKind::unilateral: {
+        const double target = std::max(0.0, lambda[r] - delta[r] / wrr);
+        change(r, settings.sor * (target - lambda[r]));
+        break;
+      }
+      case ConstraintKind::friction: {
+        const double mu = settings.muOverride >= 0 ? settings.muOverride : g.mu;
+        const double normal = std::max(0.0, lambda[r] - delta[r] / wrr);
+        change(r, settings.sor * (normal - lambda[r]));
+        // The tangent pair: Coulomb's law on its 2 x 2 block of W with the others fixed.
+        const Eigen::Matrix2d block = W.block<2, 2>(r + 1, r + 1);
+        const Eigen::Vector2d old(lambda[r + 1], lambda[r + 2]);
+        const Eigen::Vector2d d(delta[r + 1], delta[r + 2]);
+        const Eigen::Vector2d t = solveFrictionDisc(block, d - block * old, mu * lambda[r]);
+        change(r + 1, settings.sor * (t[0] - lambda[r + 1]));
+        change(r + 2, settings.sor * (t[1] - lambda[r + 2]));
+        break;
+      }
+    }
+  }
+  return largest;
+}
+
 ConstraintSolveReport solveProjectedGaussSeidel(const Eigen::MatrixXd& W,
                                                 const Eigen::VectorXd& violation,
                                                 std::span<const ConstraintGroup> groups,
@@ -47,50 +90,64 @@ ConstraintSolveReport solveProjectedGaussSeidel(const Eigen::MatrixXd& W,
   if (lambda.size() != n) lambda = Eigen::VectorXd::Zero(n);
   // delta = violation + W lambda, kept up to date as lambda changes.
   Eigen::VectorXd delta = violation + W * lambda;
-  auto change = [&](Eigen::Index r, double dl, double& largest) {
-    if (dl == 0) return;
-    lambda[r] += dl;
-    delta += W.col(r) * dl;
-    largest = std::max(largest, std::abs(W(r, r) * dl));
-  };
   report.converged = n == 0;
   for (int it = 0; it < settings.maxIterations && n > 0; ++it) {
-    double largest = 0;
-    for (const ConstraintGroup& g : groups) {
-      const auto r = static_cast<Eigen::Index>(g.firstRow);
-      const double wrr = W(r, r);
-      if (!(wrr > 0)) continue;  // a row nothing can move: left at zero
-      switch (g.kind) {
-        case ConstraintKind::bilateral:
-          change(r, -settings.sor * delta[r] / wrr, largest);
-          break;
-        case ConstraintKind::unilateral: {
-          const double target = std::max(0.0, lambda[r] - delta[r] / wrr);
-          change(r, settings.sor * (target - lambda[r]), largest);
-          break;
-        }
-        case ConstraintKind::friction: {
-          const double mu = settings.muOverride >= 0 ? settings.muOverride : g.mu;
-          const double normal = std::max(0.0, lambda[r] - delta[r] / wrr);
-          change(r, settings.sor * (normal - lambda[r]), largest);
-          // The tangent pair: Coulomb's law on its 2 x 2 block of W with the others fixed.
-          const Eigen::Matrix2d block = W.block<2, 2>(r + 1, r + 1);
-          const Eigen::Vector2d old(lambda[r + 1], lambda[r + 2]);
-          const Eigen::Vector2d d(delta[r + 1], delta[r + 2]);
-          const Eigen::Vector2d t = solveFrictionDisc(block, d - block * old, mu * lambda[r]);
-          change(r + 1, settings.sor * (t[0] - lambda[r + 1]), largest);
-          change(r + 2, settings.sor * (t[1] - lambda[r + 2]), largest);
-          break;
-        }
-      }
-    }
+    report.error = gaussSeidelSweep(W, groups, settings, lambda, delta);
     report.iterations = it + 1;
-    report.error = largest;
-    if (largest <= settings.tolerance) {
+    if (report.error <= settings.tolerance) {
       report.converged = true;
       break;
     }
   }
+  return report;
+}
+
+ConstraintSolveReport solveNonsmoothConjugateGradient(const Eigen::MatrixXd& W,
+                                                      const Eigen::VectorXd& violation,
+                                                      std::span<const ConstraintGroup> groups,
+                                                      const GaussSeidelSettings& settings,
+                                                      Eigen::VectorXd& lambda) {
+  ConstraintSolveReport report;
+  const Eigen::Index n = violation.size();
+  if (lambda.size() != n) lambda = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd delta = violation + W * lambda;
+  report.converged = n == 0;
+  if (n == 0) return report;
+  // Each iteration is a symmetric sweep (forward, then backward), a projected gradient step
+  // whose change g = lambda_new - lambda plays the minus gradient; the direction p gathers them
+  // with beta = |g_new|^2 / |g|^2 (Fletcher-Reeves), restarted (p = 0) when beta > 1, i.e. when
+  // the sweeps stop shrinking. The symmetric sweep makes the step's operator symmetric, which
+  // the conjugate momentum needs (the reasoning of SSOR-preconditioned CG): with forward sweeps
+  // alone it restarted every other iteration and saved a third of Gauss-Seidel's sweeps on a
+  // chain of 40 links; symmetric, it never restarts there and needs 1/17 of them.
+  auto symmetricSweep = [&] {
+    const double forward = gaussSeidelSweep(W, groups, settings, lambda, delta, false);
+    const double backward = gaussSeidelSweep(W, groups, settings, lambda, delta, true);
+    report.iterations += 2;
+    return std::max(forward, backward);
+  };
+  Eigen::VectorXd before = lambda;
+  report.error = symmetricSweep();
+  Eigen::VectorXd p = lambda - before;
+  double gg = p.squaredNorm();
+  while (report.error > settings.tolerance && report.iterations < settings.maxIterations) {
+    before = lambda;
+    report.error = symmetricSweep();
+    // Converged: stop on the sweep's own result, which meets the laws (the momentum may not).
+    if (report.error <= settings.tolerance) break;
+    const Eigen::VectorXd g = lambda - before;
+    const double ggNew = g.squaredNorm();
+    const double beta = gg > 0 ? ggNew / gg : 0.0;
+    gg = ggNew;
+    if (beta > 1) {
+      p.setZero();
+      continue;
+    }
+    lambda += beta * p;
+    delta.noalias() += W * (beta * p);
+    p = beta * p + g;
+  }
+  report.converged = report.error <= settings.tolerance;
   return report;
 }
 

@@ -37,6 +37,24 @@ struct GaussSeidelSettings {
 /// on the circle |lambda_t| = limit opposite to delta' (maximal dissipation).
 Eigen::Vector2d solveFrictionDisc(const Eigen::Matrix2d& B, const Eigen::Vector2d& c, double limit);
 
+/// One sweep over the groups (in reverse order when `backward`), each solved with the others
+/// fixed; lambda and delta = violation + W lambda are updated. Returns the largest displacement
+/// change W_rr |dlambda_r|.
+double gaussSeidelSweep(const Eigen::MatrixXd& W, std::span<const ConstraintGroup> groups,
+                        const GaussSeidelSettings& settings, Eigen::VectorXd& lambda,
+                        Eigen::VectorXd& delta, bool backward = false);
+
+/// The same problem by the nonsmooth nonlinear conjugate gradient (SOFA's NNCGConstraintSolver):
+/// the changes of symmetric sweeps (forward then backward) taken as (minus) gradients and
+/// combined with a Fletcher-Reeves momentum, restarted when it grows. Converges in far fewer
+/// sweeps where Gauss-Seidel crawls (stacks, long chains); ends on a sweep, so that its result
+/// meets the laws as projected Gauss-Seidel's does. `iterations` counts sweeps (two per step).
+ConstraintSolveReport solveNonsmoothConjugateGradient(const Eigen::MatrixXd& W,
+                                                      const Eigen::VectorXd& violation,
+                                                      std::span<const ConstraintGroup> groups,
+                                                      const GaussSeidelSettings& settings,
+                                                      Eigen::VectorXd& lambda);
+
 /// Solves delta = violation + W lambda with each group's law; `lambda` is the start (warm start)
 /// and the result.
 ConstraintSolveReport solveProjectedGaussSeidel(const Eigen::MatrixXd& W,

@@ -3,7 +3,7 @@
 
 #include <Eigen/LU>
 
-#include "IndexChecks.h"
+#include "core/IndexChecks.h"
 #include "core/Node.h"
 
 namespace stroma {

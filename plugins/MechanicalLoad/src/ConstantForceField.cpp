@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "ConstantForceField.h"
 
-#include "IndexChecks.h"
+#include "core/IndexChecks.h"
 
 namespace stroma {
 

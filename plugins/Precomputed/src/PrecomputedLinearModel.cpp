@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "IndexChecks.h"
+#include "core/IndexChecks.h"
 #include "Precomputed/kernels/BasisCache.h"
 #include "Precomputed/kernels/LinearStiffnessAssembly.h"
 #include "SolidMechanics/kernels/IsotropicMaterial.h"

@@ -5,6 +5,8 @@
 // input is an error naming the component and field.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/Runtime.h"
 #include "core/StateTypes.h"
 #include "plugins/TestPlugin/TestSupport.h"
@@ -117,6 +119,126 @@ TEST(Lagrangian, RigidFramesHeldTogetherKeepTheirPose) {
   EXPECT_LT(x.orientation.angularDistance(expected), 1e-6);
 }
 
+TEST(Lagrangian, FixedLagrangianConstraintHoldsPointsAndTellsTheForce) {
+  // The hanging chain of HeldPoint with point 0 held where it starts by FixedLagrangianConstraint:
+  // it stays there; at rest its holding force carries both weights. A spinning frame held
+  // (Rigid3d) keeps its place and orientation.
+  Runtime runtime;
+  Scene scene(runtime);
+  ASSERT_TRUE(scene.loadString(R"(<Node name="root" dt="0.01" gravity="0 -9.81 0">
+  <FreeMotionAnimationLoop/><GenericConstraintSolver tolerance="1e-12" maxIterations="100"/>
+  <Node name="Mass"><EulerImplicitSolver rayleighMass="2"/><SparseLDLSolver/>
+    <MechanicalObject name="dofs" position="0 1 0  0.3 1 0"/>
+    <UniformMass vertexMass="0.5"/>
+    <SpringForceField spring="0 1 200 0 0.3"/>
+    <FixedLagrangianConstraint name="hold" indices="0"/>
+    <LinearSolverConstraintCorrection/>
+  </Node>
+  <Node name="Frame"><EulerImplicitSolver/><SparseLDLSolver/>
+    <MechanicalObject template="Rigid3d" name="frame" position="1 2 3  0 0 0.258819 0.965926"
+                      velocity="0.5 0 0  1 2 3"/>
+    <UniformMass vertexMass="2 1 0.1 0 0 0 0.2 0 0 0 0.3"/>
+    <FixedLagrangianConstraint template="Rigid3d" fixAll="1"/>
+    <UncoupledConstraintCorrection/>
+  </Node>
+</Node>)")) << describe(scene.log());
+  auto& mass = *scene.root().findChild("Mass")->get<MechanicalState<Vec3Types>>();
+  for (int n = 0; n < 800; ++n) {
+    ASSERT_TRUE(scene.step()) << describe(scene.log());
+    ASSERT_LT((mass.readCoord(VecId::position())[0] - Vec3d(0, 1, 0)).norm(), 1e-9) << "step " << n;
+  }
+  const auto* forces = dynamic_cast<const Data<std::vector<Vec3d>>*>(
+      scene.root().findChild("Mass")->findObject("hold")->findData("forces"));
+  ASSERT_NE(forces, nullptr);
+  ASSERT_EQ(forces->value().size(), 1u);
+  EXPECT_NEAR(forces->value()[0].y(), 9.81, 1e-3);
+  const RigidCoord3& x =
+      scene.root().findChild("Frame")->get<MechanicalState<Rigid3Types>>()->readCoord(VecId::position())[0];
+  EXPECT_LT((x.center - Vec3d(1, 2, 3)).norm(), 1e-8);
+  EXPECT_LT(x.orientation.angularDistance(Quat(0.965926, 0, 0, 0.258819).normalized()), 1e-6);
+}
+
+TEST(Lagrangian, ABeadSlidesDownItsWireAndStopsAtTheEnd) {
+  // A 0.2 kg bead on a fixed straight wire from (0, 1, 0) to (1, 0, 0) (45 degrees), frictionless:
+  // it stays on the wire and slides with a = g sin 45 (implicit Euler: a h^2 n (n + 1) / 2 after n
+  // steps), then rests against the lower end, where the stop carries its weight.
+  Runtime runtime;
+  Scene scene(runtime);
+  ASSERT_TRUE(scene.loadString(R"(<Node name="root" dt="0.001" gravity="0 -9.81 0">
+  <FreeMotionAnimationLoop/><GenericConstraintSolver tolerance="1e-14" maxIterations="100"/>
+  <Node name="Wire"><MechanicalObject name="ends" position="0 1 0  1 0 0"/></Node>
+  <Node name="Bead"><EulerImplicitSolver rayleighMass="0" rayleighStiffness="0"/>
+    <CGLinearSolver iterations="10" tolerance="1e-20" threshold="1e-30"/>
+    <MechanicalObject name="dofs" position="0.1 0.9 0"/>
+    <UniformMass vertexMass="0.2"/>
+    <UncoupledConstraintCorrection/>
+  </Node>
+  <SlidingLagrangianConstraint name="wire" object1="@Bead/dofs" object2="@Wire/ends"
+      sliding_point="0" axis_1="0" axis_2="1"/>
+</Node>)")) << describe(scene.log());
+  const auto& bead = *scene.root().findChild("Bead")->get<MechanicalState<Vec3Types>>();
+  const Vec3d start(0.1, 0.9, 0), dir = Vec3d(1, -1, 0).normalized();
+  const double a = 9.81 * std::sqrt(0.5), h = 1e-3;
+  for (int n = 1; n <= 300; ++n) {
+    ASSERT_TRUE(scene.step()) << describe(scene.log());
+    const Vec3d d = bead.readCoord(VecId::position())[0] - start;
+    ASSERT_LT((d - d.dot(dir) * dir).norm(), 1e-10) << "left the wire at step " << n;
+    ASSERT_NEAR(d.dot(dir), a * h * h * n * (n + 1) / 2, 1e-9) << "step " << n;
+  }
+  for (int n = 0; n < 3000; ++n) ASSERT_TRUE(scene.step()) << describe(scene.log());
+  EXPECT_LT((bead.readCoord(VecId::position())[0] - Vec3d(1, 0, 0)).norm(), 1e-9);
+  const auto* force =
+      dynamic_cast<const Data<Vec3d>*>(scene.root().findObject("wire")->findData("force"));
+  ASSERT_NE(force, nullptr);
+  EXPECT_LT((force->value() - Vec3d(0, 0.2 * 9.81, 0)).norm(), 1e-6) << force->value().transpose();
+}
+
+TEST(Lagrangian, AUnilateralConstraintPushesOnlyWhileTouchingAndBrakesBySlidingFriction) {
+  // Point 1 falls onto point 0 (fixed) along y: it stops at contactDistance 0.1 above it, pushed
+  // by its weight; it never pulls (started 0.05 above the limit, it falls freely until touching).
+  // Sliding at 1 m/s along x with mu = 0.5, it brakes at mu g once landed.
+  Runtime runtime;
+  Scene scene(runtime);
+  ASSERT_TRUE(scene.loadString(R"(<Node name="root" dt="0.001" gravity="0 -9.81 0">
+  <FreeMotionAnimationLoop/><GenericConstraintSolver tolerance="1e-14" maxIterations="100"/>
+  <Node name="Ground"><MechanicalObject name="dofs" position="0 0 0"/></Node>
+  <Node name="Body"><EulerImplicitSolver rayleighMass="0" rayleighStiffness="0"/>
+    <CGLinearSolver iterations="10" tolerance="1e-20" threshold="1e-30"/>
+    <MechanicalObject name="dofs" position="0 0.15 0" velocity="1 0 0"/>
+    <UniformMass vertexMass="2"/>
+    <UncoupledConstraintCorrection/>
+  </Node>
+  <UnilateralLagrangianConstraint name="contact" object1="@Ground/dofs" object2="@Body/dofs"
+      first_point="0" second_point="0" normal="0 2 0" contactDistance="0.1" mu="0.5"/>
+</Node>)")) << describe(scene.log());
+  const auto& body = *scene.root().findChild("Body")->get<MechanicalState<Vec3Types>>();
+  const auto* forces = dynamic_cast<const Data<std::vector<Vec3d>>*>(
+      scene.root().findObject("contact")->findData("forces"));
+  ASSERT_NE(forces, nullptr);
+  double lastVx = 1;
+  int touching = 0;
+  for (int n = 1; n <= 150; ++n) {
+    ASSERT_TRUE(scene.step()) << describe(scene.log());
+    const Vec3d& x = body.readCoord(VecId::position())[0];
+    const Vec3d& v = body.readDeriv(VecId::velocity())[0];
+    ASSERT_GE(x.y(), 0.1 - 1e-12) << "step " << n;
+    ASSERT_GE(forces->value().at(0).y(), -1e-12) << "pulled at step " << n;
+    if (forces->value()[0].y() > 0) {
+      ++touching;
+      EXPECT_NEAR(x.y(), 0.1, 1e-12);
+      // The landing takes two steps (the first stops the point at the limit with the velocity
+      // of its remaining penetration only; the second, the rest); then it slides at rest on y.
+      if (touching > 2) {
+        EXPECT_NEAR(lastVx - v.x(), 0.5 * 9.81 * 1e-3, 1e-9) << "step " << n;
+      }
+    } else {
+      EXPECT_NEAR(v.x(), 1.0, 1e-12) << "braked before touching, step " << n;
+    }
+    lastVx = v.x();
+  }
+  EXPECT_GT(touching, 40);
+}
+
 struct BadLagrangianInput {
   const char* what;
   std::string xml;
@@ -164,7 +286,33 @@ INSTANTIATE_TEST_SUITE_P(
                            R"(<Node name="root"><FreeMotionAnimationLoop/><GenericConstraintSolver/>
                               <Node name="A"><MechanicalObject position="0 0 0"/>
                               <BilateralLagrangianConstraint name="hold" first_point="0 1" second_point="0 0"/></Node></Node>)",
-                           "/root/A/hold", "first_point", "point 1 is out of range of the 1 points"}),
+                           "/root/A/hold", "first_point", "1 index out of range of the 1 points: 1"},
+        BadLagrangianInput{"fixed indices out of range",
+                           R"(<Node name="root"><FreeMotionAnimationLoop/><GenericConstraintSolver/>
+                              <MechanicalObject position="0 0 0"/>
+                              <FixedLagrangianConstraint name="fix" indices="3"/></Node>)",
+                           "/root/fix", "indices", "1 index out of range of the 1 points: 3"},
+        BadLagrangianInput{"a sliding axis of zero length",
+                           R"(<Node name="root"><FreeMotionAnimationLoop/><GenericConstraintSolver/>
+                              <MechanicalObject position="0 0 0  1 1 1"/>
+                              <SlidingLagrangianConstraint name="slide" sliding_point="0" axis_1="1" axis_2="1"/></Node>)",
+                           "/root/slide", "axis_2", "no axis to slide along"},
+        BadLagrangianInput{"a unilateral constraint without a direction",
+                           R"(<Node name="root"><FreeMotionAnimationLoop/><GenericConstraintSolver/>
+                              <MechanicalObject position="0 0 0  1 1 1"/>
+                              <UnilateralLagrangianConstraint name="push" first_point="0" second_point="1" normal="0 0 0"/></Node>)",
+                           "/root/push", "normal", "non-zero direction"},
+        BadLagrangianInput{"a negative friction coefficient of a unilateral constraint",
+                           R"(<Node name="root"><FreeMotionAnimationLoop/><GenericConstraintSolver/>
+                              <MechanicalObject position="0 0 0  1 1 1"/>
+                              <UnilateralLagrangianConstraint name="push" first_point="0" second_point="1" mu="-1"/></Node>)",
+                           "/root/push", "mu", ""},
+        BadLagrangianInput{"an unknown resolution method",
+                           R"(<Node name="root"><FreeMotionAnimationLoop/><GenericConstraintSolver name="solver" resolutionMethod="Jacobi"/></Node>)",
+                           "/root/solver", "resolutionMethod", "is not one of"},
+        BadLagrangianInput{"a mouse button that does not exist",
+                           R"(<Node name="root"><AttachBodyButtonSetting name="mouse" button="Fourth"/></Node>)",
+                           "/root/mouse", "button", "expected Left, Middle or Right"}),
     NameFromWhat());
 
 }  // namespace

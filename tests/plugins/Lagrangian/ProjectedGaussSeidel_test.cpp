@@ -1,10 +1,15 @@
 // SPDX-License-Identifier: MIT
-// The projected Gauss-Seidel of the constraint solvers (plugins/Lagrangian/src/
-// ProjectedGaussSeidel.h) on random small problems: every solution meets its laws
-// (complementarity, Coulomb cones, bilateral rows held) to the solver's tolerance, and the
-// solution of a problem with a unique solution does not depend on the order of the groups.
+// The constraint solvers' algorithms (plugins/Lagrangian/src/ProjectedGaussSeidel.h) on random
+// small problems: every solution of projected Gauss-Seidel and of the nonsmooth conjugate
+// gradient meets its laws (complementarity, Coulomb cones, bilateral rows held) to the solver's
+// tolerance, both give the exact (enumerated) solution of frictionless problems, a solution
+// does not depend on the order of the groups, the conjugate gradient needs far fewer sweeps on
+// a chain, and one contact's Coulomb step slides against the slip it leaves.
 #include <gtest/gtest.h>
 
+#include <Eigen/Cholesky>
+#include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "Lagrangian/src/ProjectedGaussSeidel.h"
@@ -13,6 +18,8 @@ namespace stroma::test {
 namespace {
 
 using lagrangian::GaussSeidelSettings;
+using lagrangian::solveFrictionDisc;
+using lagrangian::solveNonsmoothConjugateGradient;
 using lagrangian::solveProjectedGaussSeidel;
 
 // W = H C H^T for random rows H and a diagonal C > 0: symmetric positive definite when the rows
@@ -128,6 +135,121 @@ TEST(ProjectedGaussSeidel, ABlockOnASlopeSticksOrSlidesAsCoulombSays) {
     const double expected = std::min(slip / c, 0.5 * a / c);
     EXPECT_NEAR(-lambda[1], expected, 1e-9) << "slip " << slip;
     EXPECT_NEAR(lambda[2], 0, 1e-12);
+  }
+}
+
+// The exact solution of a frictionless problem (bilateral and unilateral rows) by enumeration of
+// the unilateral rows that push: for each subset, the pushing rows and the bilateral ones have
+// delta = 0, the others lambda = 0; the subset whose solution meets the laws is the answer (W
+// positive definite: there is exactly one).
+Eigen::VectorXd enumerated(const Eigen::MatrixXd& W, const Eigen::VectorXd& violation,
+                           const std::vector<ConstraintGroup>& groups) {
+  std::vector<Eigen::Index> unilateral, bilateral;
+  for (const ConstraintGroup& g : groups)
+    (g.kind == ConstraintKind::unilateral ? unilateral : bilateral)
+        .push_back(static_cast<Eigen::Index>(g.firstRow));
+  for (unsigned mask = 0; mask < (1u << unilateral.size()); ++mask) {
+    std::vector<Eigen::Index> active = bilateral;
+    for (std::size_t k = 0; k < unilateral.size(); ++k)
+      if (mask & (1u << k)) active.push_back(unilateral[k]);
+    const auto a = static_cast<Eigen::Index>(active.size());
+    Eigen::MatrixXd Waa(a, a);
+    Eigen::VectorXd rhs(a);
+    for (Eigen::Index i = 0; i < a; ++i) {
+      rhs[i] = -violation[active[i]];
+      for (Eigen::Index j = 0; j < a; ++j) Waa(i, j) = W(active[i], active[j]);
+    }
+    const Eigen::VectorXd la = Waa.ldlt().solve(rhs);
+    Eigen::VectorXd lambda = Eigen::VectorXd::Zero(violation.size());
+    for (Eigen::Index i = 0; i < a; ++i) lambda[active[i]] = la[i];
+    const Eigen::VectorXd delta = violation + W * lambda;
+    bool ok = true;
+    for (Eigen::Index r : unilateral) ok &= lambda[r] >= -1e-12 && delta[r] >= -1e-12;
+    if (ok) return lambda;
+  }
+  ADD_FAILURE() << "no active set meets the laws";
+  return {};
+}
+
+TEST(ConstraintSolvers, AgreeWithTheExactSolutionOfSmallProblems) {
+  // Frictionless problems (2 bilateral and 3 unilateral rows): projected Gauss-Seidel and the
+  // nonsmooth conjugate gradient give the enumerated exact multipliers to their tolerance.
+  for (unsigned seed = 1; seed <= 30; ++seed) {
+    const Problem p = randomProblem(seed);
+    std::vector<ConstraintGroup> frictionless;
+    for (const ConstraintGroup& g : p.groups)
+      if (g.kind != ConstraintKind::friction) frictionless.push_back(g);
+    const Eigen::Index rows = static_cast<Eigen::Index>(frictionless.size());
+    const Eigen::MatrixXd W = p.W.topLeftCorner(rows, rows);
+    const Eigen::VectorXd violation = p.violation.head(rows);
+    const Eigen::VectorXd exact = enumerated(W, violation, frictionless);
+    const GaussSeidelSettings settings{.maxIterations = 100000, .tolerance = 1e-13};
+    Eigen::VectorXd pgs, nncg;
+    EXPECT_TRUE(solveProjectedGaussSeidel(W, violation, frictionless, settings, pgs).converged);
+    EXPECT_TRUE(solveNonsmoothConjugateGradient(W, violation, frictionless, settings, nncg).converged);
+    const double scale = 1 + exact.norm();
+    EXPECT_LT((pgs - exact).norm(), 1e-7 * scale) << "seed " << seed;
+    EXPECT_LT((nncg - exact).norm(), 1e-7 * scale) << "seed " << seed;
+  }
+}
+
+TEST(ConstraintSolvers, ConjugateGradientSolutionsMeetTheirLaws) {
+  // The random problems with friction: the conjugate gradient's solutions meet the laws as
+  // Gauss-Seidel's do (it ends on a sweep).
+  for (unsigned seed = 1; seed <= 50; ++seed) {
+    SCOPED_TRACE(seed);
+    const Problem p = randomProblem(seed);
+    Eigen::VectorXd lambda;
+    const ConstraintSolveReport report = solveNonsmoothConjugateGradient(
+        p.W, p.violation, p.groups, {.maxIterations = 100000, .tolerance = 1e-12}, lambda);
+    EXPECT_TRUE(report.converged) << report.iterations << " sweeps, error " << report.error;
+    expectLawsHold(p, lambda, 1e-8);
+  }
+}
+
+TEST(ConstraintSolvers, ConjugateGradientNeedsFewerSweepsOnAChain) {
+  // A hanging chain of 40 points held to each other (bilateral rows between neighbours, W the
+  // chain's Laplacian over unit masses): Gauss-Seidel propagates the load one link per sweep and
+  // crawls; the conjugate gradient gets there in a fraction of the sweeps, to the same answer.
+  const int links = 40;
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(links, links);
+  for (int i = 0; i < links; ++i) {
+    H(i, i) = 1;
+    if (i + 1 < links) H(i, i + 1) = -1;
+  }
+  const Eigen::MatrixXd W = 1e-4 * H * H.transpose();
+  const Eigen::VectorXd violation = Eigen::VectorXd::Constant(links, -1e-4);
+  std::vector<ConstraintGroup> groups;
+  for (int i = 0; i < links; ++i)
+    groups.push_back({ConstraintKind::bilateral, static_cast<std::size_t>(i), 1, 0});
+  const GaussSeidelSettings settings{.maxIterations = 1000000, .tolerance = 1e-12};
+  Eigen::VectorXd pgs, nncg;
+  const ConstraintSolveReport a = solveProjectedGaussSeidel(W, violation, groups, settings, pgs);
+  const ConstraintSolveReport b =
+      solveNonsmoothConjugateGradient(W, violation, groups, settings, nncg);
+  ASSERT_TRUE(a.converged);
+  ASSERT_TRUE(b.converged);
+  const Eigen::VectorXd exact = W.ldlt().solve(-violation);
+  EXPECT_LT((nncg - exact).norm(), 1e-6 * exact.norm());
+  EXPECT_LT((pgs - exact).norm(), 1e-6 * exact.norm());
+  EXPECT_LT(b.iterations * 4, a.iterations) << "NNCG " << b.iterations << ", PGS " << a.iterations;
+  std::printf("sweeps to 1e-12: projected Gauss-Seidel %d, conjugate gradient %d\n", a.iterations,
+              b.iterations);
+}
+
+TEST(FrictionDisc, SlidesOppositeToTheResultingSlipWhateverTheBlock) {
+  // An anisotropic block (a rigid body's corner: its rotation couples the two tangents): the
+  // sliding force lies on the circle |lambda_t| = limit and points against the slip it leaves,
+  // delta' = c + B lambda_t; sticking inside the disc cancels the slip.
+  const Eigen::Matrix2d B = (Eigen::Matrix2d() << 3.0, 1.2, 1.2, 1.0).finished();
+  for (const double angle : {0.0, 0.7, 2.0, 4.0}) {
+    const Eigen::Vector2d c = 2.0 * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    const Eigen::Vector2d t = solveFrictionDisc(B, c, 0.3);
+    const Eigen::Vector2d slip = c + B * t;
+    EXPECT_NEAR(t.norm(), 0.3, 1e-12);
+    EXPECT_LT((t / t.norm() + slip / slip.norm()).norm(), 1e-9) << "angle " << angle;
+    const Eigen::Vector2d stick = solveFrictionDisc(B, 0.01 * c, 0.3);
+    EXPECT_LT((0.01 * c + B * stick).norm(), 1e-14);
   }
 }
 
