@@ -69,7 +69,14 @@ void MechanicalObject<DataTypes>::init() {
           d_position.setValue(std::move(points));
         }
   }
+  // As SOFA, whose constructor makes one degree of freedom: a state given nothing that sizes it
+  // (no positions, size, rest positions or topology points) has one, at the origin. SOFA's
+  // scenes rely on it for a rigid body's frame (`<MechanicalObject template="Rigid3d"/>` with a
+  // RigidMapping below) and for a lone particle.
+  const bool sized = !d_position.value().empty() || d_position.isSet() || d_size.isSet() ||
+                     !d_restPosition.value().empty();
   VecCoord& x = d_position.edit();
+  if (!sized) x.assign(1, DataTypes::zeroCoord());
   if (x.empty() && d_size.value() > 0) x.assign(static_cast<std::size_t>(d_size.value()), DataTypes::zeroCoord());
   if (d_size.isSet() && d_position.isSet() && static_cast<int>(x.size()) != d_size.value() &&
       !x.empty())
