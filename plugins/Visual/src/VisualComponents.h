@@ -85,6 +85,21 @@ class OglSceneFrame final : public VisualModel {
   Data<bool> d_draw{this, "draw", true, "Draw the frame."};
 };
 
+class OglLabel final : public VisualModel {
+ public:
+  Data<std::string> d_label{this, "label", "", "Text drawn on screen."};
+  Data<std::string> d_prefix{this, "prefix", "", "Text drawn before the label."};
+  Data<std::string> d_suffix{this, "suffix", "", "Text drawn after the label."};
+  Data<std::string> d_color{this, "color", "", "Color: a name ('red') or 'r g b a'."};
+  Data<bool> d_selectContrastingColor{this, "selectContrastingColor", false,
+                                      "Pick a color that contrasts with the background."};
+  Data<int> d_fontsize{this, "fontsize", 14, "Font size (pixels).", {.min = 1.0}};
+  Data<int> d_x{this, "x", 10, "Horizontal position on screen (pixels)."};
+  Data<int> d_y{this, "y", 10, "Vertical position on screen (pixels)."};
+  Data<int> d_updateLabelEveryNbSteps{this, "updateLabelEveryNbSteps", 0,
+                                      "Steps between two updates of the label.", {.min = 0.0}};
+};
+
 class InteractiveCamera final : public VisualModel {
  public:
   Data<Vec3d> d_position{this, "position", Vec3d(0, 0, 1), "Camera position.", {.unit = "m"}};

@@ -12,6 +12,7 @@ void registerComponents(stroma::PluginRegistry& registry) {
   registry.add("VisualGrid", "A reference grid (visual only)").with<VisualGrid>();
   registry.add("LineAxis", "Reference axes (visual only)").with<LineAxis>();
   registry.add("OglSceneFrame", "An orientation frame (visual only)").with<OglSceneFrame>();
+  registry.add("OglLabel", "A text label on screen (visual only)").with<OglLabel>();
   registry.add("InteractiveCamera", "Viewer camera (visual only)").with<InteractiveCamera>();
   registry.add("LightManager", "Viewer lighting (visual only)").with<LightManager>();
   registry.add("SpotLight", "A spot light (visual only)").with<Light>();
