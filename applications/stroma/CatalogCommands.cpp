@@ -128,6 +128,11 @@ int docCommand(const std::vector<std::string>& args) {
       std::cout << "  " << l->name() << "  (link to " << l->targetTypeName() << ")\n      "
                 << l->help() << '\n';
   }
+  if (c && !c->sofaOptions.empty()) {
+    std::cout << "\nSOFA options accepted without effect:";
+    for (const auto& option : c->sofaOptions) std::cout << ' ' << option;
+    std::cout << '\n';
+  }
   if (c)
     std::cout << "\nAlso: template=\"...\" picks a template; src=\"@object\" takes every field of "
                  "the same name from another object (a loader).\n";

@@ -60,6 +60,13 @@ ComponentRegistration& ComponentRegistration::alias(std::string name) {
   return *this;
 }
 
+ComponentRegistration& ComponentRegistration::sofaOptions(std::vector<std::string> names) {
+  ComponentClass* c = m_factory.findMutable(m_name);
+  c->sofaOptions.insert(c->sofaOptions.end(), std::make_move_iterator(names.begin()),
+                        std::make_move_iterator(names.end()));
+  return *this;
+}
+
 ComponentRegistration ObjectFactory::add(std::string name, std::string description,
                                          std::string plugin) {
   ComponentClass& c = m_classes[name];

@@ -28,6 +28,10 @@ struct ComponentClass {
   std::string plugin;
   std::vector<std::string> aliases;
   std::vector<Variant> variants;  ///< the first one is the default
+  /// Attributes of SOFA's component that Stroma's has no use for (threading, drawing, GUI
+  /// options): a scene may give them; they are accepted without effect (an info message) and
+  /// listed by `stroma doc`, without crowding the component's own Data.
+  std::vector<std::string> sofaOptions;
 
   bool isTemplated() const { return !variants.empty() && !variants.front().templateName.empty(); }
   std::vector<std::string> templateNames() const;
@@ -57,6 +61,8 @@ class ComponentRegistration {
   }
   ComponentRegistration& addCreator(std::string templateName, Creator create);
   ComponentRegistration& alias(std::string name);
+  /// SOFA's attributes accepted without effect (ComponentClass::sofaOptions).
+  ComponentRegistration& sofaOptions(std::vector<std::string> names);
 
  private:
   ObjectFactory& m_factory;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "simulation/SceneLoader.h"
 
+#include <algorithm>
 #include <cctype>
 
 #include "core/BaseState.h"
@@ -174,6 +175,8 @@ class GraphBuilder {
           error(e.where, object.path(), object.className(), a.name,
                 "expected a link to " + link->targetTypeName() + ", as \"@path\"; got '" +
                     a.value + "'");
+      } else if (isSofaOption(object, a.name)) {
+        object.msgInfo("SOFA option '" + a.name + "' accepted without effect", a.name);
       } else {
         std::vector<std::string> names;
         for (const BaseData* d : object.dataFields()) names.push_back(d->name());
@@ -185,6 +188,12 @@ class GraphBuilder {
         error(e.where, object.path(), object.className(), a.name, text);
       }
     }
+  }
+
+  // An attribute of SOFA's component that the class accepts without effect.
+  bool isSofaOption(const Base& object, const std::string& name) const {
+    const ComponentClass* c = m_runtime.factory().find(object.className());
+    return c && std::find(c->sofaOptions.begin(), c->sofaOptions.end(), name) != c->sofaOptions.end();
   }
 
   void setData(Base& object, BaseData& data, const std::string& value,

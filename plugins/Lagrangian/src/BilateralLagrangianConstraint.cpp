@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "BilateralLagrangianConstraint.h"
 
+#include <algorithm>
 #include <array>
 
 #include "StateLinks.h"
@@ -12,6 +13,12 @@ template <class DataTypes>
 void BilateralLagrangianConstraint<DataTypes>::init() {
   m_state1 = lagrangian::resolveState<DataTypes>(*this, l_object1, "object1");
   m_state2 = l_object2 ? lagrangian::resolveState<DataTypes>(*this, l_object2, "object2") : m_state1;
+}
+
+// The points are checked once every component is initialized: they may come from an engine
+// (a BoxROI's indices) over a state that its own node initializes after this one.
+template <class DataTypes>
+void BilateralLagrangianConstraint<DataTypes>::bwdInit() {
   if (!m_state1 || !m_state2) return;
   const auto& first = d_firstPoint.value();
   const auto& second = d_secondPoint.value();
@@ -42,7 +49,10 @@ void BilateralLagrangianConstraint<DataTypes>::buildConstraintRows(ConstraintRow
   const auto& x1 = m_state1->readCoord(VecId::position());
   const auto& x2 = m_state2->readCoord(VecId::position());
   constexpr std::size_t dim = DataTypes::derivSize;
-  for (std::size_t k = 0; k < first.size(); ++k) {
+  // An engine may change the indices during the run: pairs out of range are left out.
+  const std::size_t pairs = std::min(first.size(), second.size());
+  for (std::size_t k = 0; k < pairs; ++k) {
+    if (first[k] >= x1.size() || second[k] >= x2.size()) continue;
     Vec3d delta;
     if constexpr (kRigid) delta = x2[second[k]].center - x1[first[k]].center;
     else delta = x2[second[k]] - x1[first[k]];
@@ -54,8 +64,9 @@ void BilateralLagrangianConstraint<DataTypes>::buildConstraintRows(ConstraintRow
     }
     if constexpr (kRigid) {
       // The rotation vector taking q1 (times the kept offset) to q2, in the world frame.
-      const Quat q = x2[second[k]].orientation *
-                     (m_orientationOffsets[k] * x1[first[k]].orientation).inverse();
+      const Quat offset =
+          k < m_orientationOffsets.size() ? m_orientationOffsets[k] : Quat::Identity();
+      const Quat q = x2[second[k]].orientation * (offset * x1[first[k]].orientation).inverse();
       const Eigen::AngleAxisd rotation(q.normalized());
       double angle = rotation.angle();
       if (angle > M_PI) angle -= 2 * M_PI;

@@ -33,13 +33,13 @@ class BilateralLagrangianConstraint final : public BaseLagrangianConstraint {
   Data<bool> d_keepOrientationDifference{this, "keepOrientationDifference", false,
                                          "Rigid3d: keep the orientation difference of the start "
                                          "instead of equal orientations."};
-  Data<double> d_numericalTolerance{this, "numericalTolerance", 1e-4, "SOFA option, accepted."};
   Data<std::vector<Vec3d>> d_forces{this, "forces", {},
                                     "Output: the force on each second point (Rigid3d: force "
                                     "then torque) at the last step.",
                                     {.unit = "N", .output = true}};
 
   void init() override;
+  void bwdInit() override;
   void buildConstraintRows(ConstraintRows& rows, double dt) override;
   void storeMultipliers(std::span<const double> lambda) override;
 

@@ -24,6 +24,12 @@ Vec3d rotationVector(const Quat& a, const Quat& b) {
 template <class DataTypes>
 void FixedLagrangianConstraint<DataTypes>::init() {
   m_state = lagrangian::resolveState<DataTypes>(*this, l_mstate, "mstate");
+}
+
+// The indices and start positions are taken once every component is initialized: they may come
+// from an engine (a BoxROI) over a state initialized after this component.
+template <class DataTypes>
+void FixedLagrangianConstraint<DataTypes>::bwdInit() {
   if (!m_state) return;
   if (d_fixAll.value()) {
     m_held.resize(m_state->size());

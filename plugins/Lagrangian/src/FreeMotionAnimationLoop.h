@@ -35,15 +35,6 @@ class FreeMotionAnimationLoop final : public AnimationLoop {
   Link<BaseConstraintSolver> l_constraintSolver{this, "constraintSolver",
                                                 "The constraint solver (default: the one in "
                                                 "this node)."};
-  Data<bool> d_solveVelocityConstraintFirst{this, "solveVelocityConstraintFirst", false,
-                                            "SOFA option, accepted: constraints are solved on "
-                                            "positions."};
-  Data<bool> d_threadSafeVisitor{this, "threadSafeVisitor", false, "SOFA option, accepted."};
-  Data<bool> d_parallelCollisionDetectionAndFreeMotion{
-      this, "parallelCollisionDetectionAndFreeMotion", false, "SOFA option, accepted."};
-  Data<bool> d_parallelODESolving{this, "parallelODESolving", false, "SOFA option, accepted."};
-  Data<bool> d_computeBoundingBox{this, "computeBoundingBox", true,
-                                  "SOFA option, accepted: bounding boxes are for drawing."};
   Data<int> d_constraintRows{this, "constraintRows", 0,
                              "Output: constraint rows of the last step.", {.output = true}};
 

@@ -31,7 +31,8 @@ ConstraintSolveReport GenericConstraintSolver::solve(const Eigen::MatrixXd& W,
   lambda = m_last.size() == violation.size() ? m_last : Eigen::VectorXd::Zero(violation.size());
   const lagrangian::GaussSeidelSettings settings{.maxIterations = d_maxIterations.value(),
                                                  .tolerance = d_tolerance.value(),
-                                                 .sor = d_sor.value()};
+                                                 .sor = d_sor.value(),
+                                                 .regularization = d_regularizationTerm.value()};
   const ConstraintSolveReport report =
       m_conjugateGradient
           ? lagrangian::solveNonsmoothConjugateGradient(W, violation, groups, settings, lambda)

@@ -28,21 +28,21 @@ class GenericConstraintSolver : public BaseConstraintSolver {
   GenericConstraintSolver() = default;
 
   Data<int> d_maxIterations{this, "maxIterations", 1000, "Largest number of Gauss-Seidel sweeps.",
-                            {.min = 1.0}};
+                            {.min = 1.0, .alias = "maxIt"}};
   Data<double> d_tolerance{this, "tolerance", 0.001,
                            "Convergence: no row's displacement changes by more than this in a "
                            "sweep.",
                            {.unit = "m", .min = 0.0}};
   Data<double> d_sor{this, "sor", 1.0, "Over-relaxation factor of the sweeps.",
                      {.min = 0.0, .max = 2.0}};
+  Data<double> d_regularizationTerm{this, "regularizationTerm", 0.0,
+                                    "Added to W's diagonal: a redundant or contradictory set of "
+                                    "bilateral constraints becomes solvable, each one yielding "
+                                    "by this compliance.",
+                                    {.unit = "m/N", .min = 0.0}};
   Data<std::string> d_resolutionMethod{this, "resolutionMethod", m_initialMethod,
                                        "ProjectedGaussSeidel, UnbuiltGaussSeidel (the same "
                                        "sweeps here) or NonsmoothNonlinearConjugateGradient."};
-  Data<bool> d_scaleTolerance{this, "scaleTolerance", true, "SOFA option, accepted."};
-  Data<bool> d_allVerified{this, "allVerified", false, "SOFA option, accepted."};
-  Data<bool> d_computeConstraintForces{this, "computeConstraintForces", false,
-                                       "SOFA option, accepted: constraintForces is always "
-                                       "filled."};
   Data<int> d_currentIterations{this, "currentIterations", 0,
                                 "Output: sweeps of the last solve.", {.output = true}};
   Data<double> d_currentError{this, "currentError", 0.0, "Output: error of the last solve.",

@@ -20,15 +20,6 @@ class LCPConstraintSolver final : public BaseConstraintSolver {
                            {.unit = "m", .min = 0.0}};
   Data<int> d_maxIt{this, "maxIt", 1000, "Largest number of Gauss-Seidel sweeps.", {.min = 1.0}};
   Data<double> d_mu{this, "mu", 0.6, "Friction coefficient of every contact.", {.min = 0.0}};
-  Data<bool> d_buildLcp{this, "build_lcp", true,
-                        "SOFA option, accepted: the compliance matrix is always built."};
-  Data<bool> d_displayTime{this, "displayTime", false, "SOFA option, accepted."};
-  Data<bool> d_initialGuess{this, "initial_guess", true,
-                            "SOFA option, accepted: Stroma's sweeps start from zero."};
-  Data<bool> d_multiGrid{this, "multi_grid", false,
-                         "SOFA option, accepted: the problem is solved on one level."};
-  Data<int> d_multiGridLevels{this, "multi_grid_levels", 2, "SOFA option, accepted.",
-                              {.min = 1.0}};
   Data<int> d_currentIterations{this, "currentIterations", 0,
                                 "Output: sweeps of the last solve.", {.output = true}};
   Data<double> d_currentError{this, "currentError", 0.0, "Output: error of the last solve.",

@@ -18,25 +18,35 @@ void registerComponents(stroma::PluginRegistry& registry) {
   using namespace stroma;
   registry.add("FreeMotionAnimationLoop",
                "Free motion, collision, then Lagrangian constraints solved through compliances")
-      .with<FreeMotionAnimationLoop>();
+      .with<FreeMotionAnimationLoop>()
+      .sofaOptions({"solveVelocityConstraintFirst", "threadSafeVisitor",
+                    "parallelCollisionDetectionAndFreeMotion", "parallelODESolving",
+                    "computeBoundingBox"});
   registry.add("GenericConstraintSolver",
                "Constraint problem by projected Gauss-Seidel, friction cones included")
       .with<GenericConstraintSolver>()
+      .sofaOptions({"scaleTolerance", "allVerified", "computeConstraintForces", "multithreading",
+                    "useSVDForRegularization"})
       .alias("BlockGaussSeidelConstraintSolver")
       .alias("ProjectedGaussSeidelConstraintSolver")
       .alias("UnbuiltGaussSeidelConstraintSolver");
   registry.add("NNCGConstraintSolver",
                "Constraint problem by the nonsmooth nonlinear conjugate gradient over "
                "Gauss-Seidel sweeps")
-      .with<NNCGConstraintSolver>();
+      .with<NNCGConstraintSolver>()
+      .sofaOptions({"scaleTolerance", "allVerified", "computeConstraintForces", "multithreading",
+                    "useSVDForRegularization"});
   registry.add("LCPConstraintSolver", "Contact problem with one friction coefficient")
-      .with<LCPConstraintSolver>();
+      .with<LCPConstraintSolver>()
+      .sofaOptions({"build_lcp", "displayTime", "initial_guess", "multi_grid", "multi_grid_levels"});
   registry.add("UncoupledConstraintCorrection",
                "Compliance of each degree of freedom alone (1 / mass)")
-      .with<UncoupledConstraintCorrection>();
+      .with<UncoupledConstraintCorrection>()
+      .sofaOptions({"defaultCompliance", "useOdeSolverIntegrationFactors"});
   registry.add("LinearSolverConstraintCorrection",
                "Compliance through the solver's own system and linear solver")
       .with<LinearSolverConstraintCorrection>()
+      .sofaOptions({"ODESolver", "wire_optimization", "solverName"})
       .alias("GenericConstraintCorrection");
   registry.add("PrecomputedConstraintCorrection",
                "Compliance of the solver's system computed once (cached on disk), turned with "
@@ -45,6 +55,7 @@ void registerComponents(stroma::PluginRegistry& registry) {
   registry.add("BilateralLagrangianConstraint", "Points or frames held together by multipliers")
       .with<BilateralLagrangianConstraint<Vec3Types>>("Vec3d")
       .with<BilateralLagrangianConstraint<Rigid3Types>>("Rigid3d")
+      .sofaOptions({"numericalTolerance", "topology1", "topology2"})
       .alias("BilateralInteractionConstraint");
   registry.add("FixedLagrangianConstraint", "Points or frames held where they start by multipliers")
       .with<FixedLagrangianConstraint<Vec3Types>>("Vec3d")

@@ -23,7 +23,6 @@ class LinearSolverConstraintCorrection final : public BaseConstraintCorrection {
  public:
   Link<Base> l_linearSolver{this, "linearSolver",
                             "The linear solver (default: the one in this node)."};
-  Link<Base> l_odeSolver{this, "ODESolver", "SOFA option, accepted: the node's ODE solver."};
   Data<double> d_complianceFactor{this, "complianceFactor", 1.0,
                                   "Factor of the compliance (and of the correction).",
                                   {.min = 0.0}};
@@ -34,9 +33,6 @@ class LinearSolverConstraintCorrection final : public BaseConstraintCorrection {
                                     "(a redundant or singular set of constraints becomes "
                                     "solvable).",
                                     {.unit = "m/N", .min = 0.0}};
-  Data<bool> d_wireOptimization{this, "wire_optimization", false, "SOFA option, accepted."};
-  Data<std::string> d_solverName{this, "solverName", "", "SOFA's older name of linearSolver: "
-                                                         "accepted, the node's solver is used."};
 
   void init() override;
   void addCompliance(MechanicalOperations& mop, const ConstraintResponse& response,

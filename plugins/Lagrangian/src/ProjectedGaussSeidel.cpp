@@ -41,17 +41,19 @@ double gaussSeidelSweep(const Eigen::MatrixXd& W, std::span<const ConstraintGrou
                         const GaussSeidelSettings& settings, Eigen::VectorXd& lambda,
                         Eigen::VectorXd& delta, bool backward) {
   double largest = 0;
+  const double reg = settings.regularization;
   auto change = [&](Eigen::Index r, double dl) {
     if (dl == 0) return;
     lambda[r] += dl;
     delta += W.col(r) * dl;
-    largest = std::max(largest, std::abs(W(r, r) * dl));
+    delta[r] += reg * dl;
+    largest = std::max(largest, std::abs((W(r, r) + reg) * dl));
   };
   const std::size_t count = groups.size();
   for (std::size_t k = 0; k < count; ++k) {
     const ConstraintGroup& g = groups[backward ? count - 1 - k : k];
     const auto r = static_cast<Eigen::Index>(g.firstRow);
-    const double wrr = W(r, r);
+    const double wrr = W(r, r) + reg;
     if (!(wrr > 0)) continue;  // a row nothing can move: left at zero
     switch (g.kind) {
       case ConstraintKind::bilateral:
@@ -67,7 +69,8 @@ double gaussSeidelSweep(const Eigen::MatrixXd& W, std::span<const ConstraintGrou
         const double normal = std::max(0.0, lambda[r] - delta[r] / wrr);
         change(r, settings.sor * (normal - lambda[r]));
         // The tangent pair: Coulomb's law on its 2 x 2 block of W with the others fixed.
-        const Eigen::Matrix2d block = W.block<2, 2>(r + 1, r + 1);
+        const Eigen::Matrix2d block =
+            W.block<2, 2>(r + 1, r + 1) + reg * Eigen::Matrix2d::Identity();
         const Eigen::Vector2d old(lambda[r + 1], lambda[r + 2]);
         const Eigen::Vector2d d(delta[r + 1], delta[r + 2]);
         const Eigen::Vector2d t = solveFrictionDisc(block, d - block * old, mu * lambda[r]);
@@ -89,7 +92,7 @@ ConstraintSolveReport solveProjectedGaussSeidel(const Eigen::MatrixXd& W,
   const Eigen::Index n = violation.size();
   if (lambda.size() != n) lambda = Eigen::VectorXd::Zero(n);
   // delta = violation + W lambda, kept up to date as lambda changes.
-  Eigen::VectorXd delta = violation + W * lambda;
+  Eigen::VectorXd delta = violation + W * lambda + settings.regularization * lambda;
   report.converged = n == 0;
   for (int it = 0; it < settings.maxIterations && n > 0; ++it) {
     report.error = gaussSeidelSweep(W, groups, settings, lambda, delta);
@@ -110,7 +113,7 @@ ConstraintSolveReport solveNonsmoothConjugateGradient(const Eigen::MatrixXd& W,
   ConstraintSolveReport report;
   const Eigen::Index n = violation.size();
   if (lambda.size() != n) lambda = Eigen::VectorXd::Zero(n);
-  Eigen::VectorXd delta = violation + W * lambda;
+  Eigen::VectorXd delta = violation + W * lambda + settings.regularization * lambda;
   report.converged = n == 0;
   if (n == 0) return report;
   // Each iteration is a symmetric sweep (forward, then backward), a projected gradient step
@@ -145,6 +148,7 @@ ConstraintSolveReport solveNonsmoothConjugateGradient(const Eigen::MatrixXd& W,
     }
     lambda += beta * p;
     delta.noalias() += W * (beta * p);
+    delta += settings.regularization * beta * p;
     p = beta * p + g;
   }
   report.converged = report.error <= settings.tolerance;

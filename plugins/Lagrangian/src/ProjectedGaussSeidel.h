@@ -29,6 +29,8 @@ struct GaussSeidelSettings {
   double sor = 1.0;
   /// When >= 0, every friction group uses this coefficient (LCPConstraintSolver's `mu`).
   double muOverride = -1;
+  /// Added to W's diagonal (a compliance, m/N): the problem solved is that of W + r I.
+  double regularization = 0;
 };
 
 /// Coulomb's law for one contact's tangent pair with the rest fixed: the post-slip is

@@ -11,6 +11,10 @@ namespace stroma {
 void SlidingLagrangianConstraint::init() {
   m_state1 = lagrangian::resolveState<Vec3Types>(*this, l_object1, "object1");
   m_state2 = l_object2 ? lagrangian::resolveState<Vec3Types>(*this, l_object2, "object2") : m_state1;
+}
+
+// Checked once every component is initialized (the states may be initialized after this one).
+void SlidingLagrangianConstraint::bwdInit() {
   if (!m_state1 || !m_state2) return;
   reportIndicesOutOfRange(*this, std::vector<unsigned>{d_slidingPoint.value()}, m_state1->size(),
                           "sliding_point");

@@ -28,6 +28,7 @@ class SlidingLagrangianConstraint final : public BaseLagrangianConstraint {
                       {.unit = "N", .output = true}};
 
   void init() override;
+  void bwdInit() override;
   void buildConstraintRows(ConstraintRows& rows, double dt) override;
   void storeMultipliers(std::span<const double> lambda) override;
 

@@ -25,12 +25,6 @@ class UncoupledConstraintCorrection final : public BaseConstraintCorrection {
                                          "value, one per degree of freedom, or empty for the "
                                          "inverse of the lumped mass.",
                                          {.min = 0.0}};
-  Data<double> d_defaultCompliance{this, "defaultCompliance", 1e-5,
-                                   "SOFA option, accepted: the compliance comes from "
-                                   "`compliance` or the mass."};
-  Data<bool> d_useOdeSolverIntegrationFactors{this, "useOdeSolverIntegrationFactors", true,
-                                              "SOFA option, accepted: the ODE solver's factors "
-                                              "are always used."};
 
   void addCompliance(MechanicalOperations& mop, const ConstraintResponse& response,
                      const Eigen::SparseMatrix<double, Eigen::RowMajor>& H,

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "UnilateralLagrangianConstraint.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "StateLinks.h"
@@ -12,6 +13,17 @@ void UnilateralLagrangianConstraint::init() {
   m_state1 = lagrangian::resolveState<Vec3Types>(*this, l_object1, "object1");
   m_state2 = l_object2 ? lagrangian::resolveState<Vec3Types>(*this, l_object2, "object2") : m_state1;
   if (!m_state1 || !m_state2) return;
+  const double length = d_normal.value().norm();
+  if (!(length > 0) || !std::isfinite(length)) {
+    msgError("must be a non-zero direction", "normal");
+    return;
+  }
+  m_frame = contactFrame(d_normal.value() / length);
+}
+
+// The points are checked once every component is initialized: they may come from an engine.
+void UnilateralLagrangianConstraint::bwdInit() {
+  if (!m_state1 || !m_state2) return;
   if (d_firstPoint.value().size() != d_secondPoint.value().size()) {
     msgError("has " + std::to_string(d_firstPoint.value().size()) + " first points and " +
                  std::to_string(d_secondPoint.value().size()) +
@@ -21,12 +33,6 @@ void UnilateralLagrangianConstraint::init() {
   }
   reportIndicesOutOfRange(*this, d_firstPoint.value(), m_state1->size(), "first_point");
   reportIndicesOutOfRange(*this, d_secondPoint.value(), m_state2->size(), "second_point");
-  const double length = d_normal.value().norm();
-  if (!(length > 0) || !std::isfinite(length)) {
-    msgError("must be a non-zero direction", "normal");
-    return;
-  }
-  m_frame = contactFrame(d_normal.value() / length);
 }
 
 void UnilateralLagrangianConstraint::buildConstraintRows(ConstraintRows& rows, double dt) {
@@ -37,7 +43,10 @@ void UnilateralLagrangianConstraint::buildConstraintRows(ConstraintRows& rows, d
   const auto& v2 = m_state2->readDeriv(VecId::velocity());
   const auto& first = d_firstPoint.value();
   const auto& second = d_secondPoint.value();
-  for (std::size_t k = 0; k < first.size(); ++k) {
+  // An engine may change the indices during the run: pairs out of range are left out.
+  const std::size_t pairs = std::min(first.size(), second.size());
+  for (std::size_t k = 0; k < pairs; ++k) {
+    if (first[k] >= x1.size() || second[k] >= x2.size()) continue;
     const double gap = m_frame[0].dot(x2[second[k]] - x1[first[k]]) - d_contactDistance.value();
     const Vec3d slip = dt * (v2[second[k]] - v1[first[k]]);
     const std::size_t row = addContactGroup(rows, m_frame, gap, slip, d_mu.value(), m_rowsPerPair);

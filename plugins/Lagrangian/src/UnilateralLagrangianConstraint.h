@@ -33,6 +33,7 @@ class UnilateralLagrangianConstraint final : public BaseLagrangianConstraint {
                                     {.unit = "N", .output = true}};
 
   void init() override;
+  void bwdInit() override;
   void buildConstraintRows(ConstraintRows& rows, double dt) override;
   void storeMultipliers(std::span<const double> lambda) override;
 

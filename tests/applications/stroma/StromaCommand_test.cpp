@@ -628,7 +628,8 @@ TEST(StromaCommand, DocOfAnotherTemplateAndOfATestComponent) {
                            "  increment  (real, range [0, 10])\n      Added to 'total' at each "
                            "step.\n      default: 1\n",
                            "  count  (int, output)", "  elapsed  (real, unit s, output)",
-                           "Links:\n  mstate  (link to BaseState)"})
+                           "Links:\n  mstate  (link to BaseState)",
+                           "SOFA options accepted without effect: showCount"})
     EXPECT_TRUE(has(r.out, part)) << part << '\n' << show(r);
 }
 

@@ -131,6 +131,19 @@ TEST_F(SceneLoaderTest, UnnamedUnknownComponentIsNamedAfterItsClass) {
   expectPlace(m, file, 2, "/root/testCountr", "TestCountr", "");
 }
 
+TEST_F(SceneLoaderTest, SofaOptionsOfAClassAreAcceptedWithoutEffect) {
+  // TestCounter accepts SOFA's "showCount" (a drawing option it has no Data for): an info
+  // message, no error; another unknown attribute is still an error.
+  EXPECT_TRUE(load(R"(<Node name="root"><TestCounter name="c" showCount="1"/></Node>)"))
+      << describe(scene.log());
+  bool told = false;
+  for (const Message& m : scene.log().messages())
+    told |= m.level == MessageLevel::info && m.field == "showCount" &&
+            m.text.find("SOFA option 'showCount' accepted without effect") != std::string::npos;
+  EXPECT_TRUE(told) << describe(scene.log());
+  EXPECT_FALSE(load(R"(<Node name="root"><TestCounter name="c" showCounts="1"/></Node>)"));
+}
+
 TEST_F(SceneLoaderTest, SofaComponentThatStromaLacksIsSaidToBeOne) {
   EXPECT_FALSE(load(R"(<Node name="root">
   <MechanicalObject name="dofs" position="0 0 0"/>

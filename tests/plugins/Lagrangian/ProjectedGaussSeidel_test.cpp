@@ -237,6 +237,24 @@ TEST(ConstraintSolvers, ConjugateGradientNeedsFewerSweepsOnAChain) {
               b.iterations);
 }
 
+TEST(ConstraintSolvers, RegularizationSharesARedundantConstraint) {
+  // The same bilateral row twice (W = c [1 1; 1 1], singular): with regularizationTerm r the
+  // problem of W + r I has one solution, the two sharing the load, lambda = a / (2 c + r) each.
+  const double c = 1e-3, a = 0.01, r = 1e-5;
+  const Eigen::MatrixXd W = c * Eigen::MatrixXd::Ones(2, 2);
+  const Eigen::VectorXd violation = Eigen::Vector2d(-a, -a);
+  const std::vector<ConstraintGroup> rows{{ConstraintKind::bilateral, 0, 1, 0},
+                                          {ConstraintKind::bilateral, 1, 1, 0}};
+  const GaussSeidelSettings settings{.maxIterations = 100000, .tolerance = 1e-15, .regularization = r};
+  Eigen::VectorXd pgs, nncg;
+  solveProjectedGaussSeidel(W, violation, rows, settings, pgs);
+  solveNonsmoothConjugateGradient(W, violation, rows, settings, nncg);
+  for (const Eigen::VectorXd& lambda : {pgs, nncg}) {
+    EXPECT_NEAR(lambda[0], a / (2 * c + r), 1e-9 * a / c);
+    EXPECT_NEAR(lambda[1], a / (2 * c + r), 1e-9 * a / c);
+  }
+}
+
 TEST(FrictionDisc, SlidesOppositeToTheResultingSlipWhateverTheBlock) {
   // An anisotropic block (a rigid body's corner: its rotation couples the two tangents): the
   // sliding force lies on the circle |lambda_t| = limit and points against the slip it leaves,

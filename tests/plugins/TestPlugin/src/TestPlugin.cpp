@@ -13,7 +13,8 @@ void registerComponents(stroma::PluginRegistry& registry) {
   using namespace stroma::test;
   registry.add("TestCounter", "Counts its steps (test)")
       .with<TestCounter>()
-      .alias("LegacyTestCounter");
+      .alias("LegacyTestCounter")
+      .sofaOptions({"showCount"});
   registry.add("TestEngine", "Doubles its input lazily (test)").with<TestEngine>();
   registry.add("TestLoader", "Makes points, as a mesh loader would (test)").with<TestLoader>();
   registry.add("TestTemplated", "Templated on the degrees of freedom (test)")
