@@ -18,10 +18,7 @@ void GenericConstraintSolver::init() {
 }
 
 void GenericConstraintSolver::cleanup() {
-  if (m_unconverged > 1)
-    msgWarning("stopped unconverged in " + std::to_string(m_unconverged) + " of " +
-                   std::to_string(m_solves) + " solves",
-               "maxIterations");
+  lagrangian::unconvergedSummary(*this, m_counts, "maxIterations");
 }
 
 ConstraintSolveReport GenericConstraintSolver::solve(const Eigen::MatrixXd& W,
@@ -38,16 +35,10 @@ ConstraintSolveReport GenericConstraintSolver::solve(const Eigen::MatrixXd& W,
           ? lagrangian::solveNonsmoothConjugateGradient(W, violation, groups, settings, lambda)
           : lagrangian::solveProjectedGaussSeidel(W, violation, groups, settings, lambda);
   m_last = lambda;
-  ++m_solves;
   d_currentIterations.setValue(report.iterations);
   d_currentError.setValue(report.error);
   d_constraintForces.edit().assign(lambda.data(), lambda.data() + lambda.size());
-  if (!report.converged && m_unconverged++ == 0)
-    msgWarning("stopped after " + std::to_string(report.iterations) +
-                   " iterations without converging: error " + formatNumber(report.error) +
-                   " > tolerance " + formatNumber(d_tolerance.value()) +
-                   " (raise maxIterations or the tolerance); later ones are counted",
-               "maxIterations");
+  lagrangian::countSolve(*this, report, d_tolerance.value(), "maxIterations", m_counts);
   return report;
 }
 

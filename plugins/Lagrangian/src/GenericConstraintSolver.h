@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ProjectedGaussSeidel.h"
+#include "SolverSupport.h"
 #include "core/Data.h"
 #include "core/DataTraits.h"
 
@@ -60,7 +61,7 @@ class GenericConstraintSolver : public BaseConstraintSolver {
 
  private:
   Eigen::VectorXd m_last;  // the last multipliers, for the warm start
-  long long m_solves = 0, m_unconverged = 0;
+  lagrangian::SolveCounts m_counts;
   bool m_conjugateGradient = false;
 };
 

@@ -9,10 +9,7 @@ namespace stroma {
 void LCPConstraintSolver::init() { lagrangian::checkFreeMotionLoop(*this); }
 
 void LCPConstraintSolver::cleanup() {
-  if (m_unconverged > 1)
-    msgWarning("stopped unconverged in " + std::to_string(m_unconverged) + " of " +
-                   std::to_string(m_solves) + " solves",
-               "maxIt");
+  lagrangian::unconvergedSummary(*this, m_counts, "maxIt");
 }
 
 ConstraintSolveReport LCPConstraintSolver::solve(const Eigen::MatrixXd& W,
@@ -26,15 +23,9 @@ ConstraintSolveReport LCPConstraintSolver::solve(const Eigen::MatrixXd& W,
                                                  .muOverride = d_mu.value()};
   const ConstraintSolveReport report =
       lagrangian::solveProjectedGaussSeidel(W, violation, groups, settings, lambda);
-  ++m_solves;
   d_currentIterations.setValue(report.iterations);
   d_currentError.setValue(report.error);
-  if (!report.converged && m_unconverged++ == 0)
-    msgWarning("stopped after " + std::to_string(report.iterations) +
-                   " iterations without converging: error " + formatNumber(report.error) +
-                   " > tolerance " + formatNumber(d_tolerance.value()) +
-                   " (raise maxIt or the tolerance); later ones are counted",
-               "maxIt");
+  lagrangian::countSolve(*this, report, d_tolerance.value(), "maxIt", m_counts);
   return report;
 }
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "ProjectedGaussSeidel.h"
+#include "SolverSupport.h"
 #include "core/Data.h"
 
 namespace stroma {
@@ -32,7 +33,7 @@ class LCPConstraintSolver final : public BaseConstraintSolver {
                               Eigen::VectorXd& lambda) override;
 
  private:
-  long long m_solves = 0, m_unconverged = 0;
+  lagrangian::SolveCounts m_counts;
 };
 
 }  // namespace stroma

@@ -1,9 +1,14 @@
 // SPDX-License-Identifier: MIT
-// What the constraint solvers share: they only act under FreeMotionAnimationLoop.
+// What the constraint solvers share: they only act under FreeMotionAnimationLoop, and they
+// report the solves that stop unconverged the same way.
 #pragma once
 
+#include <string>
+
+#include "core/Message.h"
 #include "core/Node.h"
 #include "simulation/AnimationLoop.h"
+#include "simulation/Constraints.h"
 
 namespace stroma::lagrangian {
 
@@ -18,6 +23,33 @@ inline bool checkFreeMotionLoop(Base& solver) {
                   "<FreeMotionAnimationLoop/> to the root node" +
                   std::string(loop ? " instead of its " + loop->className() : ""));
   return false;
+}
+
+/// A solver's count of its solves and of those that stopped unconverged.
+struct SolveCounts {
+  long long solves = 0;
+  long long unconverged = 0;
+};
+
+/// Counts a solve; warns (on `field`, the iteration limit) the first time one stops
+/// unconverged, later ones being counted for unconvergedSummary.
+inline void countSolve(Base& solver, const ConstraintSolveReport& report, double tolerance,
+                       const char* field, SolveCounts& counts) {
+  ++counts.solves;
+  if (!report.converged && counts.unconverged++ == 0)
+    solver.msgWarning("stopped after " + std::to_string(report.iterations) +
+                          " iterations without converging: error " + formatNumber(report.error) +
+                          " > tolerance " + formatNumber(tolerance) + " (raise " + field +
+                          " or the tolerance); later ones are counted",
+                      field);
+}
+
+/// At cleanup: how many solves stopped unconverged, when more than the first (already told).
+inline void unconvergedSummary(Base& solver, const SolveCounts& counts, const char* field) {
+  if (counts.unconverged > 1)
+    solver.msgWarning("stopped unconverged in " + std::to_string(counts.unconverged) + " of " +
+                          std::to_string(counts.solves) + " solves",
+                      field);
 }
 
 }  // namespace stroma::lagrangian
