@@ -51,7 +51,8 @@ void registerComponents(stroma::PluginRegistry& registry) {
   registry.add("PrecomputedConstraintCorrection",
                "Compliance of the solver's system computed once (cached on disk), turned with "
                "the body; a precomputed model's own basis")
-      .with<PrecomputedConstraintCorrection>();
+      .with<PrecomputedConstraintCorrection>()
+      .sofaOptions({"restDeformations", "debugViewFrameScale"});
   registry.add("BilateralLagrangianConstraint", "Points or frames held together by multipliers")
       .with<BilateralLagrangianConstraint<Vec3Types>>("Vec3d")
       .with<BilateralLagrangianConstraint<Rigid3Types>>("Rigid3d")

@@ -6,9 +6,9 @@
 #include <filesystem>
 
 #include "CorrectionSupport.h"
-#include "core/IndexChecks.h"
 #include "Precomputed/kernels/BasisCache.h"
 #include "Precomputed/kernels/BasisSource.h"
+#include "core/IndexChecks.h"
 #include "core/Node.h"
 #include "linalg/AssembledMatrix.h"
 #include "simulation/MechanicalOperations.h"
@@ -81,8 +81,8 @@ void PrecomputedConstraintCorrection::bwdInit() {
   ConstraintResponse response;
   if (!m_solver->constraintResponse(dt, response)) {
     msgError(m_solver->path() + " (" + m_solver->className() +
-             ") cannot answer constraint "
-             "forces: use EulerImplicitSolver, symplectic EulerExplicitSolver or StaticSolver");
+             ") cannot answer constraint forces: use EulerImplicitSolver, symplectic "
+             "EulerExplicitSolver or StaticSolver");
     return;
   }
   if (!reportIndicesOutOfRange(*this, d_basisIndices.value(), m_state->size(), "basisIndices"))
@@ -101,8 +101,8 @@ bool PrecomputedConstraintCorrection::prepareRotations() {
   const Topology* topology = m_state->node() ? m_state->node()->getUp<Topology>() : nullptr;
   if (!topology || topology->allEdges().empty()) {
     msgError("the rotations need the mesh of " + m_state->path() +
-                 " (a topology with edges or "
-                 "elements in its node or above); add one, or set rotations=\"false\"",
+                 " (a topology with edges or elements in its node or above); add one, or set "
+                 "rotations=\"false\"",
              "rotations");
     return false;
   }
@@ -137,7 +137,8 @@ bool PrecomputedConstraintCorrection::precompute(MechanicalOperations& mop,
     basisNodes.assign(d_basisIndices.value().begin(), d_basisIndices.value().end());
 
   // A at rest. Forces first: corotational force fields take the rotations of their matrix from
-  // their last force evaluation.
+  // their last force evaluation (during a step this leaves them at rest until the next step's
+  // forces, which the solvers evaluate first).
   MechanicalParams atRest = response.matrix;
   atRest.x = VecId::restPosition();
   const VecId force = mop.allocDeriv();

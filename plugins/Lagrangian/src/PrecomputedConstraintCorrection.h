@@ -52,7 +52,6 @@ class PrecomputedConstraintCorrection final : public BaseConstraintCorrection {
   Data<bool> d_rotations{this, "rotations", true,
                          "Turn the compliance with each node's rotation from rest (SOFA's "
                          "default is false; a rotated corotational body needs it)."};
-  Data<bool> d_restDeformations{this, "restDeformations", false, "SOFA option, accepted."};
   Data<bool> d_recompute{this, "recompute", false,
                          "Always compute the compliance, never read it from the cache file (it "
                          "is still written)."};
@@ -61,11 +60,6 @@ class PrecomputedConstraintCorrection final : public BaseConstraintCorrection {
                                     0.0,
                                     "Added to the diagonal of W on the rows acting on this body.",
                                     {.unit = "m/N", .min = 0.0}};
-  Data<double> d_debugViewFrameScale{this,
-                                     "debugViewFrameScale",
-                                     1.0,
-                                     "SOFA option, accepted (drawing belongs to viewers).",
-                                     {.min = 0.0}};
   Data<std::string> d_fileCompliance{this, "fileCompliance", "",
                                      "Compliance cache file; empty: <fileDir>/<key>.compliance."};
   Data<std::string> d_fileDir{this, "fileDir", "",

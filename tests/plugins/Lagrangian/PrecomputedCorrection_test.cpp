@@ -261,6 +261,18 @@ TEST_F(PrecomputedCorrection, CacheWrittenThenReadGivesTheSameNumbers) {
   }
 }
 
+TEST_F(PrecomputedCorrection, AcceptsSofasAttributes) {
+  // As SOFA's scenes write it (DeformableOnRigidFrameMappingConstraints.scn: recompute="true"),
+  // with its drawing and rest-deformation options accepted without effect.
+  Runtime runtime;
+  Scene scene(runtime);
+  ASSERT_TRUE(loadQuietly(
+      scene, dynamicBody("recompute=\"true\" rotations=\"true\" debugViewFrameScale=\"0.5\" "
+                         "restDeformations=\"false\" fileCompliance=\"" +
+                         file("c") + "\"")));
+  EXPECT_EQ(dataText(scene, "/body/precomputed", "loadedFromCache"), "0");
+}
+
 struct ChangedInput {
   const char* what;
   BodyInputs inputs;
