@@ -169,10 +169,10 @@ TEST_F(PrecomputedCorrection, TurnsWithTheBodyRotatedRigidly) {
   // The whole body (its clamped nodes too, which then stay there) turned by 40 degrees about a
   // slanted axis and moved: a corotational body has A = R A_0 R^T, which the per-node rotations
   // recover (a rigid ring gives its rotation exactly): equal to 1e-10 relative. The compliance
-  // left unrotated is wrong by tens of percent, so the test sees the rotations.
+  // left unrotated is more than 10 % off, so the test sees the rotations.
   Runtime runtime;
   Scene scene(runtime);
-  ASSERT_TRUE(loadQuietly(scene, dynamicBody("fileCompliance=\"" + file("c") + "\"") + ""));
+  ASSERT_TRUE(loadQuietly(scene, dynamicBody("fileCompliance=\"" + file("c") + "\"")));
   auto* dofs = objectAt<MechanicalState<Vec3Types>>(scene, "/body/dofs");
   ASSERT_NE(dofs, nullptr);
   const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Vec3d(1, 2, 3).normalized()).toRotationMatrix();
