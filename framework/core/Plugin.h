@@ -23,7 +23,7 @@
 namespace stroma {
 
 /// Bumped whenever a public class layout or virtual interface changes.
-inline constexpr int kPluginAbiVersion = 2;
+inline constexpr int kPluginAbiVersion = 3;
 
 /// What a plugin's registration function receives: the factory, tagged with the plugin's name.
 class PluginRegistry {

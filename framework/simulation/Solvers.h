@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
 #include "core/Base.h"
 #include "core/Node.h"
 #include "simulation/VecId.h"
@@ -59,6 +62,19 @@ class LinearSolver : public Base {
     (void)mop;
     (void)x;
     (void)rhs;
+    return false;
+  }
+  /// W += factor J A^-1 J^T with the matrix of its last solve (SOFA's addJMInvJt): J is
+  /// (rows x systemSize()), W (rows x rows). A direct solver does it from its factors without a
+  /// solve per row of J (the compliance of the constraint corrections). False when it cannot;
+  /// the caller then solves row by row.
+  virtual bool addJMInvJt(MechanicalOperations& mop,
+                          const Eigen::SparseMatrix<double, Eigen::RowMajor>& J, double factor,
+                          Eigen::MatrixXd& W) {
+    (void)mop;
+    (void)J;
+    (void)factor;
+    (void)W;
     return false;
   }
 };

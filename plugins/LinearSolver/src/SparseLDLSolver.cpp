@@ -30,6 +30,7 @@ LinearSolveReport SparseLDLSolver::solve(MechanicalOperations& mop, const Mechan
   if (m_matrix.patternRevision() != m_analyzedRevision) {
     m_ldlt.analyzePattern(A);
     m_analyzedRevision = m_matrix.patternRevision();
+    m_treeStale = true;
     d_symbolicAnalyses.setValue(d_symbolicAnalyses.value() + 1);
   }
   m_ldlt.factorize(A);
@@ -78,6 +79,10 @@ LinearSolveReport SparseLDLSolver::solve(MechanicalOperations& mop, const Mechan
   }
   d_LNnz.setValue(static_cast<int>(m_ldlt.matrixL().nestedExpression().nonZeros()));
   m_factorized = true;
+  if (m_treeStale) {
+    m_compliance.setFactor(m_ldlt.matrixL().nestedExpression());
+    m_treeStale = false;
+  }
 
   mop.gather(rhs, m_rhs);
   m_solution = m_ldlt.solve(m_rhs);
@@ -91,6 +96,15 @@ bool SparseLDLSolver::solveWithLastMatrix(MechanicalOperations& mop, VecId x, Ve
   m_solution = m_ldlt.solve(m_rhs);
   mop.scatter(m_solution, x);
   return true;
+}
+
+bool SparseLDLSolver::addJMInvJt(MechanicalOperations& mop,
+                                 const Eigen::SparseMatrix<double, Eigen::RowMajor>& J,
+                                 double factor, Eigen::MatrixXd& W) {
+  if (!m_factorized || static_cast<std::size_t>(m_ldlt.rows()) != mop.systemSize()) return false;
+  ScopedPhase phase(mop.timing(), "linearSolve");
+  return m_compliance.add(m_ldlt.matrixL().nestedExpression(), m_ldlt.vectorD(),
+                          m_ldlt.permutationP().indices(), J, factor, W);
 }
 
 }  // namespace stroma

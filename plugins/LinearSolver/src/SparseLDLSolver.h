@@ -4,6 +4,7 @@
 #include <Eigen/SparseCholesky>
 #include <cstdint>
 
+#include "LdltCompliance.h"
 #include "core/Link.h"
 #include "linalg/AssembledMatrix.h"
 #include "simulation/Solvers.h"
@@ -41,6 +42,9 @@ class SparseLDLSolver final : public LinearSolver {
                           VecId rhs) override;
   /// With the factorization of the last solve (one product by L^-T D^-1 L^-1 per call).
   bool solveWithLastMatrix(MechanicalOperations& mop, VecId x, VecId rhs) override;
+  /// From the factors of the last solve, without a solve per row of J (LdltCompliance.h).
+  bool addJMInvJt(MechanicalOperations& mop, const Eigen::SparseMatrix<double, Eigen::RowMajor>& J,
+                  double factor, Eigen::MatrixXd& W) override;
 
  private:
   AssembledMatrix m_matrix;
@@ -48,6 +52,8 @@ class SparseLDLSolver final : public LinearSolver {
   bool m_reportedIndefinite = false;
   bool m_factorized = false;  ///< the last solve left a usable factorization
   std::uint64_t m_analyzedRevision = 0;  ///< patternRevision() of the analysis; 0: none
+  LdltCompliance m_compliance;
+  bool m_treeStale = true;  ///< a new analysis: the compliance's elimination tree is to be read
   Eigen::VectorXd m_rhs, m_solution;
 };
 
