@@ -24,22 +24,29 @@ void LinearSolverConstraintCorrection::addCompliance(
     MechanicalOperations& mop, const ConstraintResponse& response,
     const Eigen::SparseMatrix<double, Eigen::RowMajor>& H, Eigen::MatrixXd& W) {
   if (!m_solver) return;
-  const auto n = static_cast<Eigen::Index>(mop.systemSize());
-  m_U.resize(n, H.rows());
-  const VecId rhs = mop.allocDeriv(), solution = mop.allocDeriv();
-  for (Eigen::Index r = 0; r < H.rows(); ++r) {
-    m_rhs = H.row(r).transpose();
-    mop.scatter(m_rhs, rhs);
-    mop.projectResponse(rhs);
-    if (!m_solver->solveWithLastMatrix(mop, solution, rhs))
-      m_solver->solve(mop, response.matrix, solution, rhs);
-    mop.projectResponse(solution);
-    mop.gather(solution, m_column);
-    m_U.col(r) = m_column;
+  const double factor = d_complianceFactor.value() * response.positionFactor;
+  // A direct solver gives H A^-1 H^T from its factors; otherwise one solve per row, U = A^-1 H^T
+  // kept for the correction.
+  m_rows = H.rows();
+  m_direct = m_solver->addJMInvJt(mop, H, factor, W);
+  if (!m_direct) {
+    const auto n = static_cast<Eigen::Index>(mop.systemSize());
+    m_U.resize(n, H.rows());
+    const VecId rhs = mop.allocDeriv(), solution = mop.allocDeriv();
+    for (Eigen::Index r = 0; r < H.rows(); ++r) {
+      m_rhs = H.row(r).transpose();
+      mop.scatter(m_rhs, rhs);
+      mop.projectResponse(rhs);
+      if (!m_solver->solveWithLastMatrix(mop, solution, rhs))
+        m_solver->solve(mop, response.matrix, solution, rhs);
+      mop.projectResponse(solution);
+      mop.gather(solution, m_column);
+      m_U.col(r) = m_column;
+    }
+    mop.freeVec(rhs);
+    mop.freeVec(solution);
+    W += factor * (H * m_U);
   }
-  mop.freeVec(rhs);
-  mop.freeVec(solution);
-  W += d_complianceFactor.value() * response.positionFactor * (H * m_U);
   if (const double regularization = d_regularizationTerm.value(); regularization > 0)
     for (Eigen::Index r = 0; r < H.rows(); ++r)
       if (H.row(r).nonZeros() > 0) W(r, r) += regularization;
@@ -48,8 +55,22 @@ void LinearSolverConstraintCorrection::addCompliance(
 void LinearSolverConstraintCorrection::applyCorrection(
     MechanicalOperations& mop, const ConstraintResponse& response,
     const Eigen::SparseMatrix<double, Eigen::RowMajor>& H, const Eigen::VectorXd& lambda) {
-  if (!m_solver || m_U.cols() != H.rows()) return;
-  m_correction = d_complianceFactor.value() * (m_U * lambda);
+  if (!m_solver || m_rows != H.rows()) return;
+  if (m_direct) {
+    // dx = A^-1 H^T lambda: one solve with the factors of the compliance.
+    m_rhs = d_complianceFactor.value() * (H.transpose() * lambda);
+    const VecId rhs = mop.allocDeriv(), solution = mop.allocDeriv();
+    mop.scatter(m_rhs, rhs);
+    mop.projectResponse(rhs);
+    const bool solved = m_solver->solveWithLastMatrix(mop, solution, rhs);
+    mop.projectResponse(solution);
+    mop.gather(solution, m_correction);
+    mop.freeVec(rhs);
+    mop.freeVec(solution);
+    if (!solved) return;
+  } else {
+    m_correction = d_complianceFactor.value() * (m_U * lambda);
+  }
   lagrangian::moveStates(mop, response, m_correction);
 }
 

@@ -13,8 +13,9 @@ namespace stroma {
 /// SOFA's LinearSolverConstraintCorrection and GenericConstraintCorrection: the compliance of
 /// the solver's states through its own system A (the matrix of its last step, mass, damping and
 /// stiffness: Constraints.h's ConstraintResponse):
-///   U = A^-1 H^T (one solve per constraint row, with the linear solver's factorization when it
-///   keeps one: SparseLDLSolver),   W += positionFactor complianceFactor H U,
+///   U = A^-1 H^T (one solve per constraint row),   W += positionFactor complianceFactor H U,
+///   or, from a direct solver's factors (LinearSolver::addJMInvJt: SparseLDLSolver), W alone
+///   and then dx = A^-1 H^T lambda with one solve;
 ///   dx = positionFactor complianceFactor U lambda,   dv = velocityFactor complianceFactor U
 ///   lambda.
 /// `regularizationTerm` is added to W's diagonal on the rows that act on these states.
@@ -44,7 +45,9 @@ class LinearSolverConstraintCorrection final : public BaseConstraintCorrection {
 
  private:
   LinearSolver* m_solver = nullptr;
-  Eigen::MatrixXd m_U;  // A^-1 H^T of the last compliance
+  Eigen::MatrixXd m_U;  // A^-1 H^T of the last compliance, when solved row by row
+  bool m_direct = false;  // the last compliance came from the solver's factors (addJMInvJt)
+  Eigen::Index m_rows = -1;  // rows of the last compliance
   Eigen::VectorXd m_rhs, m_column, m_correction;
 };
 

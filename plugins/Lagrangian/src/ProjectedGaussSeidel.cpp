@@ -15,8 +15,11 @@ Eigen::Vector2d solveFrictionDisc(const Eigen::Matrix2d& B, const Eigen::Vector2
     if (stick.norm() <= limit) return stick;
   }
   // Sliding: lambda_t = -k delta', delta' = c + B lambda_t, so lambda_t(k) = -k (I + k B)^-1 c,
-  // whose length grows with k from 0 (to |B^-1 c| > limit): bisection on log k, then one exact
-  // rescale onto the circle.
+  // whose length grows with k from 0 (to |B^-1 c| > limit): a bracket [low, high], then Newton
+  // on |lambda_t(k)| = limit (d lambda_t / dk = -(I + k B)^-2 c), bisecting on log k when a step
+  // leaves the bracket; then one exact rescale onto the circle. Bisection alone took about 50
+  // halvings of log k per sliding contact, half the time of the Gauss-Seidel sweeps on SOFA's
+  // fallingBeamLagrangianCollision.scn; Newton converges quadratically.
   const double cn = c.norm();
   if (!(cn > 0)) return Eigen::Vector2d::Zero();
   auto at = [&](double k) -> Eigen::Vector2d {
@@ -28,11 +31,19 @@ Eigen::Vector2d solveFrictionDisc(const Eigen::Matrix2d& B, const Eigen::Vector2
     low = high;
     high *= 4;
   }
+  double k = high;
   for (int i = 0; i < 100 && high - low > 1e-15 * high; ++i) {
-    const double mid = low > 0 ? std::sqrt(low * high) : 0.5 * high;
-    (at(mid).norm() < limit ? low : high) = mid;
+    const Eigen::Matrix2d inverse = (Eigen::Matrix2d::Identity() + k * B).inverse();
+    const Eigen::Vector2d u = inverse * c, t = -k * u;
+    const double length = t.norm(), gap = length - limit;
+    if (std::abs(gap) <= 1e-15 * limit) break;
+    (gap < 0 ? low : high) = k;
+    const double slope = length > 0 ? -t.dot(inverse * u) / length : 0.0;
+    double next = slope > 0 ? k - gap / slope : -1.0;
+    if (!(next > low && next < high)) next = low > 0 ? std::sqrt(low * high) : 0.5 * high;
+    k = next;
   }
-  const Eigen::Vector2d t = at(high);
+  const Eigen::Vector2d t = at(k);
   const double n = t.norm();
   return n > 0 ? Eigen::Vector2d(t * (limit / n)) : t;
 }

@@ -20,8 +20,8 @@ namespace stroma {
 /// rows reached are gathered into a dense block and W (or X) gets its symmetric rank-k product.
 /// Measured on SOFA's fallingBeamLagrangianCollision.scn: bench/README.md.
 ///
-/// The buffers are kept between calls: once warm, a call with no more rows, columns and
-/// reached dofs than before allocates nothing.
+/// The buffers are kept between calls (vectors keep their capacity, the gathered block only
+/// grows); the J X J^T temporaries are resized when the number of columns changes.
 class LdltCompliance {
  public:
   using Factor = Eigen::SparseMatrix<double>;  // L: unit lower triangular, column-major
