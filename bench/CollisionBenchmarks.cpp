@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Collision detection and contact (plugins/Collision): the cost of a collision step on a
 // 10,000-triangle organ-sized surface against a 1,000-triangle instrument and for its
-// self-collision, and whole scenes with contact (SOFA's Demos/liver.scn unmodified, the bundled
-// scenes/collision). README.md ("Collision") has the numbers and the commands. Timings are never
-// pass/fail: the ctest entry only checks that every entry runs.
+// self-collision, and whole scenes with contact (SOFA's Demos/liver.scn and
+// Demos/fallingBeamLagrangianCollision.scn unmodified, the bundled scenes/collision).
+// README.md ("Collision") has the numbers and the commands. Timings are never pass/fail: the
+// ctest entry only checks that every entry runs.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -156,7 +157,8 @@ void OrganSelfCollision(benchmark::State& state) {
 BENCHMARK(OrganSelfCollision)->Unit(benchmark::kMicrosecond);
 
 /// Steps/s of a scene file: each iteration loads it (untimed) and times stepsPerRun() steps.
-void sceneSteps(benchmark::State& state, const fs::path& file) {
+/// With `phase`, also that phase's share of the steps' time (counter "<phase> share", %).
+void sceneSteps(benchmark::State& state, const fs::path& file, const char* phase = nullptr) {
   if (!fs::exists(file)) {
     state.SkipWithError(("skipped, not found: " + file.string() +
                          " (set STROMA_SHARED_DIR to the folder holding sofa/)")
@@ -164,6 +166,7 @@ void sceneSteps(benchmark::State& state, const fs::path& file) {
     return;
   }
   const int steps = stepsPerRun();
+  double phaseSeconds = 0, stepSeconds = 0;
   for (auto _ : state) {
     state.PauseTiming();
     auto runtime = std::make_unique<Runtime>();
@@ -185,18 +188,34 @@ void sceneSteps(benchmark::State& state, const fs::path& file) {
       state.SkipWithError(("step failed:\n" + errorsOf(*scene)).c_str());
       break;
     }
+    if (phase) {
+      phaseSeconds += scene->timing().seconds(phase);
+      stepSeconds += scene->timing().seconds("step");
+    }
     scene.reset();
     runtime.reset();
     state.ResumeTiming();
   }
   state.counters["steps/s"] = benchmark::Counter(
       static_cast<double>(state.iterations()) * steps, benchmark::Counter::kIsRate);
+  if (phase && stepSeconds > 0)
+    state.counters[std::string(phase) + " share %"] = 100 * phaseSeconds / stepSeconds;
 }
 
 void SofaLiver(benchmark::State& state) {
   sceneSteps(state, sharedDir() / "sofa/examples/Demos/liver.scn");
 }
 BENCHMARK(SofaLiver)->Unit(benchmark::kMillisecond);
+
+// SOFA's Lagrangian contact demo unmodified: a FEM beam (625 nodes, PCGLinearSolver
+// preconditioned by SparseLDLSolver) falls 1 m onto a box and rests on it with friction
+// (FrictionContactConstraint, GenericConstraintSolver, LinearSolverConstraintCorrection); the
+// constraint phase's share of the step beside the rate.
+void SofaFallingBeam(benchmark::State& state) {
+  sceneSteps(state, sharedDir() / "sofa/examples/Demos/fallingBeamLagrangianCollision.scn",
+             "constraints");
+}
+BENCHMARK(SofaFallingBeam)->Unit(benchmark::kMillisecond);
 
 void OrganOnFloor(benchmark::State& state) {
   sceneSteps(state, fs::path(STROMA_SOURCE_DIR) / "scenes/collision/OrganOnFloor.scn");
