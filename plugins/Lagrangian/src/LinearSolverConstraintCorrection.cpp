@@ -58,7 +58,8 @@ void LinearSolverConstraintCorrection::applyCorrection(
   if (!m_solver || m_rows != H.rows()) return;
   if (m_direct) {
     // dx = A^-1 H^T lambda: one solve with the factors of the compliance.
-    m_rhs = d_complianceFactor.value() * (H.transpose() * lambda);
+    m_rhs.noalias() = H.transpose() * lambda;
+    m_rhs *= d_complianceFactor.value();
     const VecId rhs = mop.allocDeriv(), solution = mop.allocDeriv();
     mop.scatter(m_rhs, rhs);
     mop.projectResponse(rhs);
