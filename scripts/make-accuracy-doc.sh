@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Regenerates the tables and plots of docs/accuracy.md (issue 7 item 8): runs the studies of
-# bench/studies (Cantilever, TruthCube, UniaxialBlock) with `stroma bench` (full versions, one thread), keeps their CSV and PNG under
+# bench/studies (Cantilever, TruthCube, UniaxialBlock, Hertz) with `stroma bench` (full versions, one thread), keeps their CSV and PNG under
 # docs/accuracy/, and rewrites each table of docs/accuracy.md between its markers
 # <!-- BEGIN name --> and <!-- END name --> (the prose around them is written by hand).
 #
-#   scripts/make-accuracy-doc.sh [STROMA]     (default build/bin/stroma; about 10 minutes)
+#   scripts/make-accuracy-doc.sh [STROMA]     (default build/bin/stroma; about 11 minutes)
 #   scripts/make-accuracy-doc.sh --tables-only   (the tables again from docs/accuracy/*.csv)
 #
 # A study whose rows fail still gives its table (the status column says why); the script stops
@@ -17,7 +17,7 @@ out=docs/accuracy
 mkdir -p "$out"
 command -v python3 >/dev/null || { echo "make-accuracy-doc: python3 is needed" >&2; exit 2; }
 
-studies="Cantilever TruthCube UniaxialBlock"
+studies="Cantilever TruthCube UniaxialBlock Hertz"
 [ "$stroma" = --tables-only ] && studies=""
 for study in $studies; do
   code=0
@@ -85,9 +85,38 @@ def block():
                     f"{num(x['vs_linear'], 2)} | {num(x['vs_stvk'], 2)} | {x['status']} |")
     return "\n".join(text)
 
+def hertz():
+    """Per response, meshes: the largest error over the 4 indentations (%) and the signed errors
+    at d / R = 2 %, against the half-space solution at the centre's depth and against the law."""
+    r = rows("Hertz")
+    resolutions = list(dict.fromkeys(x["resolution"] for x in r))
+    def cell(model, res, text):
+        hit = [x for x in r if x["model"] == model and x["resolution"] == res]
+        if not hit:
+            return ""
+        return hit[0]["status"] if hit[0]["status"] != "ok" else text(hit[0])
+    pc = lambda v: f"{100 * float(v):+.3g}"
+    tables = [("largest |error| over d / R = 0.5 to 2 %, in %: against the half-space solution / "
+               "against F_H(delta) (wall time of the 4 steps, s)",
+               lambda x: f"{100 * float(x['max_error']):.3g} / {100 * float(x['max_hertz_error']):.3g} "
+                         f"({num(x['wall_s'], 2)})"),
+              ("signed error at d / R = 2 %, in %: against the half-space solution / against "
+               "F_H(delta); contact force (N)",
+               lambda x: f"{pc(x['half_space_error_2pc'])} / {pc(x['hertz_error_2pc'])}; "
+                         f"{num(x['force_2pc_N'], 4)}")]
+    text = []
+    for title, show in tables:
+        text.append(f"\n**{title}**\n")
+        text.append("| response | " + " | ".join(f"N = {x}" for x in resolutions) + " |")
+        text.append("|---" * (len(resolutions) + 1) + "|")
+        for model in dict.fromkeys(x["model"] for x in r):
+            text.append(f"| {model} | " + " | ".join(cell(model, res, show) for res in resolutions)
+                        + " |")
+    return "\n".join(text).strip("\n")
+
 text = open(doc).read()
 for name, table in (("Cantilever", cantilever()), ("TruthCube", truthcube()),
-                    ("UniaxialBlock", block())):
+                    ("UniaxialBlock", block()), ("Hertz", hertz())):
     pattern = re.compile(rf"<!-- BEGIN {name} -->.*?<!-- END {name} -->", re.S)
     if not pattern.search(text):
         sys.exit(f"make-accuracy-doc: {doc} has no markers for {name}")

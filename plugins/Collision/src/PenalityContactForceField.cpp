@@ -108,7 +108,10 @@ template <class D1, class D2>
 void PenalityContactForceField<D1, D2>::accumulateForce(const MechanicalParams& mp, VecId f) {
   m_lastForce.setZero();
   m_active = 0;
-  if (m_contacts.empty()) return;
+  if (m_contacts.empty()) {
+    d_force.setValue(m_lastForce);
+    return;
+  }
   const auto& x1 = m_state1->readCoord(mp.x);
   const auto& x2 = m_state2->readCoord(mp.x);
   auto& f1 = m_state1->writeDeriv(f);
@@ -122,6 +125,7 @@ void PenalityContactForceField<D1, D2>::accumulateForce(const MechanicalParams& 
     m_lastForce += force;
     ++m_active;
   }
+  d_force.setValue(m_lastForce);
   if (m_lastForce.norm() > m_largestForce) {
     m_largestForce = m_lastForce.norm();
     m_largestForceTime = node() ? node()->time() : 0.0;

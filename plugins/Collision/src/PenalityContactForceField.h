@@ -61,6 +61,13 @@ class PenalityContactForceField final : public BaseForceField, public RunSummary
                                   "Add to the stiffness the turn of the contact points' arms "
                                   "with their frames ([f]x [r]x on a frame's rotation block): "
                                   "the exact tangent, not symmetric."};
+  Data<Vec3d> d_force{this,
+                      "force",
+                      Vec3d::Zero(),
+                      "Output: the total force of the contacts on the second model's side at "
+                      "the last force evaluation (N, minus that on the first), as the "
+                      "constraint responses' force.",
+                      {.output = true}};
 
   PenalityContactForceField(State1* state1, State2* state2) : m_state1(state1), m_state2(state2) {}
 

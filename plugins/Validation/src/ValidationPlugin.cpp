@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "HertzContactComparison.h"
 #include "ReferenceComparison.h"
 #include "core/Plugin.h"
 
@@ -11,6 +12,10 @@ void registerComponents(stroma::PluginRegistry& registry) {
            "Error of a state's positions against an analytic solution, a reference state file "
            "or marker positions (max and RMS, relative to a reference length)")
       .with<ReferenceComparison>();
+  registry
+      .add("HertzContactComparison",
+           "Contact force of an elastic sphere pressed on a rigid plane against Hertz's law")
+      .with<HertzContactComparison>();
 }
 
 }  // namespace
