@@ -4,8 +4,9 @@
 // LDL, static, central differences, symplectic Euler, RK4) on a clamped beam, one extreme
 // setting at a time: Young's modulus, Poisson's ratio, time step, a mesh with slivers and
 // near-flat elements, elements inverted by an imposed displacement, a load 100 times the
-// stiffness scale, an impact. Each case is a scene made from a text template and run in this
-// process; it ends stable, stalled, refused or diverged, with the reason the solvers reported.
+// stiffness scale, an impact; then the contact cases (StabilityContactCases.cpp). Each case is a
+// scene made from a text template and run in this process; it ends stable, stalled, refused or
+// diverged, with the reason the solvers reported.
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "CommandLine.h"
+#include "StabilityContactCases.h"
 #include "core/Runtime.h"
 #include "core/StateTypes.h"
 #include "simulation/MechanicalState.h"
@@ -233,11 +235,7 @@ std::string sceneXml(const Beam& beam, const Model& model, const Solver& solver,
   return xml.str();
 }
 
-struct Outcome {
-  std::string status, reason;
-  long long steps = 0;
-  double maxDisplacement = 0, tipRatio = NAN, criticalDt = NAN, wallSeconds = 0;
-};
+using Outcome = StabilityOutcome;
 
 // The first warning or error (error only: `errorsOnly`) whose text holds `key`, or "".
 std::string findMessage(const MessageLog& log, const std::string& key, bool errorsOnly = false) {
@@ -286,50 +284,14 @@ Outcome runCase(Runtime& runtime, const Beam& beam, const Model& model, const So
     if (BaseData* bound = ode->findData("criticalTimeStep"))
       out.criticalDt = std::atof(bound->valueText().c_str());
 
-  // The outcome, the worst first.
   const double limit = 10 * std::max(kLength, linearTipDeflection(s));
-  const MessageLog& log = scene.log();
-  std::string text;
-  if (!(text = findMessage(log, "is not finite")).empty() ||
-      !(text = findMessage(log, "divergence (energy growth)")).empty()) {
-    out.status = "diverged";
-  } else if (!finite || out.maxDisplacement > limit) {
-    out.status = "diverged";
-    text = "unbounded: largest displacement " + shortNumber(out.maxDisplacement) + " m > " +
-           shortNumber(limit) + " m (10 times the beam's length or linear deflection)";
-  } else if (!(text = findMessage(log, "divergence (time step above")).empty()) {
-    out.status = "refused";
-  } else if (!(text = findMessage(log, "divergence (stalled Newton")).empty() ||
-             !(text = findMessage(log, "divergence (unconverged linear")).empty()) {
-    out.status = "stalled";
-  } else if (log.errorCount() > 0) {
-    out.status = "error";
-    text = findMessage(log, "", true);
-  } else {
-    out.status = "stable";
-  }
-  out.reason = text;
+  std::string unbounded;
+  if (!finite || out.maxDisplacement > limit)
+    unbounded = "unbounded: largest displacement " + shortNumber(out.maxDisplacement) + " m > " +
+                shortNumber(limit) + " m (10 times the beam's length or linear deflection)";
+  classifyOutcome(scene.log(), unbounded, out);
   out.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
-}
-
-/// "corotational-tetrahedra-large_central-differences_dt-1.scn": a case's scene for
-/// --save-scenes, to rerun it with `stroma run`.
-std::string caseFileName(const Model& model, const Solver& solver, const Case& c) {
-  // Words in lower case joined by '-'; the value as written ("1e+10", "0.4999").
-  const auto words = [](const std::string& text) {
-    std::string out;
-    for (char ch : text) {
-      if (std::isalnum(static_cast<unsigned char>(ch)))
-        out += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-      else if (!out.empty() && out.back() != '-')
-        out += '-';
-    }
-    while (!out.empty() && out.back() == '-') out.pop_back();
-    return out;
-  };
-  return words(model.name) + "_" + words(solver.name) + "_" + words(c.name) +
-         (c.value == "-" ? "" : "-" + c.value) + ".scn";
 }
 
 std::string csvField(const std::string& text) {
@@ -342,6 +304,47 @@ std::string csvField(const std::string& text) {
 std::string csvNumber(double value) { return std::isnan(value) ? "" : shortNumber(value); }
 
 }  // namespace
+
+void classifyOutcome(const MessageLog& log, const std::string& unbounded, StabilityOutcome& out) {
+  // The outcome, the worst first.
+  std::string text;
+  if (!(text = findMessage(log, "is not finite")).empty() ||
+      !(text = findMessage(log, "divergence (energy growth)")).empty()) {
+    out.status = "diverged";
+  } else if (!unbounded.empty()) {
+    out.status = "diverged";
+    text = unbounded;
+  } else if (!(text = findMessage(log, "divergence (time step above")).empty()) {
+    out.status = "refused";
+  } else if (!(text = findMessage(log, "divergence (stalled Newton")).empty() ||
+             !(text = findMessage(log, "divergence (unconverged linear")).empty()) {
+    out.status = "stalled";
+  } else if (log.errorCount() > 0) {
+    out.status = "error";
+    text = findMessage(log, "", true);
+  } else {
+    out.status = "stable";
+  }
+  out.reason = text;
+}
+
+std::string stabilityCaseFileName(const std::string& model, const std::string& solver,
+                                  const std::string& caseName, const std::string& value) {
+  // Words in lower case joined by '-'; the value as written ("1e+10", "0.4999").
+  const auto words = [](const std::string& text) {
+    std::string out;
+    for (char ch : text) {
+      if (std::isalnum(static_cast<unsigned char>(ch)))
+        out += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+      else if (!out.empty() && out.back() != '-')
+        out += '-';
+    }
+    while (!out.empty() && out.back() == '-') out.pop_back();
+    return out;
+  };
+  return words(model) + "_" + words(solver) + "_" + words(caseName) +
+         (value == "-" ? "" : "-" + value) + ".scn";
+}
 
 int stabilityCommand(const std::vector<std::string>& args) {
   Arguments a;
@@ -363,7 +366,7 @@ int stabilityCommand(const std::vector<std::string>& args) {
     csv.open(*path);
     if (!csv) return usageError("cannot write the CSV file '" + *path + "'");
     csv << "model,solver,case,value,status,steps,max_displacement_m,static_tip_over_linear,"
-           "critical_dt_s,wall_s,reason\n";
+           "critical_dt_s,wall_s,max_penetration_m,reason\n";
   }
   const Beam beam = quick ? Beam{5, 2, 2} : Beam{9, 3, 3};
   const long long steps = quick ? 50 : 100;
@@ -371,6 +374,21 @@ int stabilityCommand(const std::vector<std::string>& args) {
   Runtime runtime;
   for (const auto& dir : a.values("--data-path")) runtime.addDataDirectory(dir);
   std::map<std::string, int> counts;
+  // One row: counted, printed, and in the CSV.
+  const StabilityReport report = [&](const std::string& model, const std::string& solver,
+                                     const std::string& caseName, const std::string& value,
+                                     const Outcome& out) {
+    ++counts[out.status];
+    std::printf("  %-32s %-22s %-12s %-7s %-8s %s\n", model.c_str(), solver.c_str(),
+                caseName.c_str(), value.c_str(), out.status.c_str(),
+                out.status == "stable" ? "" : out.reason.substr(0, 160).c_str());
+    if (csv.is_open())
+      csv << csvField(model) << ',' << csvField(solver) << ',' << csvField(caseName) << ',' << value
+          << ',' << out.status << ',' << out.steps << ',' << csvNumber(out.maxDisplacement) << ','
+          << csvNumber(out.tipRatio) << ',' << csvNumber(out.criticalDt) << ','
+          << csvNumber(out.wallSeconds) << ',' << csvNumber(out.penetration) << ','
+          << csvField(out.reason) << '\n';
+  };
   std::printf("Stability suite%s: %zu models x %zu solvers x %zu cases, beam %dx%dx%d points\n",
               quick ? " (quick)" : "", std::size(kModels), std::size(kSolvers), cases.size(),
               beam.nx, beam.ny, beam.nz);
@@ -378,7 +396,8 @@ int stabilityCommand(const std::vector<std::string>& args) {
     for (const Solver& solver : kSolvers)
       for (const Case& c : cases) {
         if (sceneDir)
-          std::ofstream(std::filesystem::path(*sceneDir) / caseFileName(model, solver, c))
+          std::ofstream(std::filesystem::path(*sceneDir) /
+                        stabilityCaseFileName(model.name, solver.name, c.name, c.value))
               << sceneXml(beam, model, solver, c.setting);
         Outcome out;
         try {
@@ -387,17 +406,9 @@ int stabilityCommand(const std::vector<std::string>& args) {
           out.status = "crash";
           out.reason = e.what();
         }
-        ++counts[out.status];
-        std::printf("  %-32s %-22s %-12s %-7s %-8s %s\n", model.name, solver.name, c.name.c_str(),
-                    c.value.c_str(), out.status.c_str(),
-                    out.status == "stable" ? "" : out.reason.substr(0, 160).c_str());
-        if (csv.is_open())
-          csv << csvField(model.name) << ',' << csvField(solver.name) << ',' << csvField(c.name)
-              << ',' << c.value << ',' << out.status << ',' << out.steps << ','
-              << csvNumber(out.maxDisplacement) << ',' << csvNumber(out.tipRatio) << ','
-              << csvNumber(out.criticalDt) << ',' << csvNumber(out.wallSeconds) << ','
-              << csvField(out.reason) << '\n';
+        report(model.name, solver.name, c.name, c.value, out);
       }
+  runContactCases(runtime, quick, sceneDir, report);
   std::printf("Outcomes:");
   for (const auto& [status, count] : counts) std::printf(" %s %d", status.c_str(), count);
   std::printf("\n");
