@@ -66,11 +66,14 @@ class TetrahedronFEMForceField final : public ForceField<Vec3Types> {
       "averaged nodal pressure, locking-free; any method). Read at init."};
 
   // SOFA's options about how K is applied: Stroma assembles K exactly when the solver asks for
-  // a matrix, and recomputes the element constants when the material changes.
+  // a matrix, and recomputes the element constants when the material changes. A matrix-free
+  // solve that applies K several times at one point goes through K's 3 x 3 blocks, refilled
+  // once per point (CorotationalElements.h), whatever computeGlobalMatrix says.
   Data<bool> d_computeGlobalMatrix{this, "computeGlobalMatrix", false,
                                    "SOFA option, accepted: K is assembled when the linear "
                                    "solver asks for a matrix, and applied matrix-free "
-                                   "otherwise."};
+                                   "otherwise (through its 3 x 3 blocks, refilled once per "
+                                   "step, when a solve applies it several times)."};
   Data<bool> d_assembling{this, "assembling", false,
                           "SOFA's older name of computeGlobalMatrix; accepted, as it."};
   Data<bool> d_updateStiffnessMatrix{

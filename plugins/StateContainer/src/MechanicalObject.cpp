@@ -198,12 +198,18 @@ const typename MechanicalObject<DataTypes>::VecDeriv& MechanicalObject<DataTypes
 
 template <class DataTypes>
 typename MechanicalObject<DataTypes>::VecDeriv& MechanicalObject<DataTypes>::writeDeriv(VecId v) {
+  return derivOfSize(v, size());
+}
+
+template <class DataTypes>
+typename MechanicalObject<DataTypes>::VecDeriv& MechanicalObject<DataTypes>::derivOfSize(
+    VecId v, std::size_t n) {
   if (Data<VecDeriv>* d = derivData(v.index)) {
     VecDeriv& values = d->edit();
-    if (values.size() != size()) values.resize(size(), DataTypes::zeroDeriv());
+    if (values.size() != n) values.resize(n, DataTypes::zeroDeriv());
     return values;
   }
-  return temporary(m_tempDerivs, v.index, size(), false);
+  return temporary(m_tempDerivs, v.index, n, false);
 }
 
 template <class DataTypes>
@@ -293,11 +299,12 @@ void fromNumbers(const double* in, RigidDeriv3& d) {
 
 template <class DataTypes>
 void MechanicalObject<DataTypes>::vOp(VecId v, VecId a, VecId b, double f) {
+  // size() once: it reads the positions, through their links (the loader's inputs checked).
   const std::size_t n = size();
   if (v.isDeriv()) {
-    VecDeriv& out = writeDeriv(v);
-    const VecDeriv* va = a.isNull() ? nullptr : &readDeriv(a);
-    const VecDeriv* vb = b.isNull() ? nullptr : &readDeriv(b);
+    VecDeriv& out = derivOfSize(v, n);
+    const VecDeriv* va = a.isNull() ? nullptr : &derivOfSize(a, n);
+    const VecDeriv* vb = b.isNull() ? nullptr : &derivOfSize(b, n);
     for (std::size_t i = 0; i < n; ++i)
       combine(out[i], va ? &(*va)[i] : nullptr, vb ? &(*vb)[i] : nullptr, f);
     return;
@@ -305,7 +312,7 @@ void MechanicalObject<DataTypes>::vOp(VecId v, VecId a, VecId b, double f) {
   VecCoord& out = writeCoord(v);
   const VecCoord* va = a.isNull() ? nullptr : &readCoord(a);
   if (b.isDeriv()) {
-    const VecDeriv& vb = readDeriv(b);
+    const VecDeriv& vb = derivOfSize(b, n);
     for (std::size_t i = 0; i < n; ++i) integrate(out[i], va ? &(*va)[i] : nullptr, &vb[i], f);
   } else {
     const VecCoord* vb = b.isNull() ? nullptr : &readCoord(b);
@@ -316,8 +323,10 @@ void MechanicalObject<DataTypes>::vOp(VecId v, VecId a, VecId b, double f) {
 
 template <class DataTypes>
 double MechanicalObject<DataTypes>::vDot(VecId a, VecId b) const {
-  const VecDeriv& va = readDeriv(a);
-  const VecDeriv& vb = readDeriv(b);
+  auto& self = const_cast<MechanicalObject&>(*this);
+  const std::size_t n = size();
+  const VecDeriv& va = self.derivOfSize(a, n);
+  const VecDeriv& vb = self.derivOfSize(b, n);
   double sum = 0;
   for (std::size_t i = 0; i < va.size(); ++i) sum += dotOf(va[i], vb[i]);
   return sum;

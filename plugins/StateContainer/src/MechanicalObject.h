@@ -96,6 +96,8 @@ class MechanicalObject final : public MechanicalState<DataTypes> {
  private:
   Data<VecCoord>* coordData(int index);
   Data<VecDeriv>* derivData(int index);
+  /// writeDeriv for a known size() (n), read once per vector operation.
+  VecDeriv& derivOfSize(VecId v, std::size_t n);
   // Temporaries of solvers, by id - VecId::kFirstTemporary. Kept between steps (capacity
   // reused), so that a step allocates nothing after the first.
   mutable std::vector<std::unique_ptr<VecCoord>> m_tempCoords;

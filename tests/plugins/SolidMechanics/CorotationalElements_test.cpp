@@ -2,6 +2,8 @@
 // CorotationalElements on hexahedra: equal elements share one entry of the constants, and the
 // forces, products, assembled K and energy stay those of one entry per element (the kernels
 // called element by element) to round-off.
+// On tetrahedra: the products through the stiffness blocks, which the products after the first
+// at one linearization point use, are those of the element loop to round-off.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -214,6 +216,61 @@ TEST(CorotationalElements, RemovedHexahedraKeepTheirSharedConstants) {
   hexahedra.addForce(fem::RotationMethod::large, x, f, pool);
   fresh.addForce(fem::RotationMethod::large, x, expected, pool);
   EXPECT_LT((flatten(f) - flatten(expected)).norm(), 1e-11 * flatten(expected).norm());
+}
+
+using Tetrahedra = CorotationalElements<fem::CorotationalTetrahedron>;
+
+Tetrahedra makeTetrahedra(const Grid& grid, const ThreadPool& pool) {
+  Tetrahedra tetrahedra;
+  const std::vector<Tetrahedra::Indices> elements(grid.mesh.tetrahedra.begin(),
+                                                  grid.mesh.tetrahedra.end());
+  tetrahedra.setElements(elements, grid.mesh.points.size());
+  std::vector<double> youngModulus(elements.size(), 3000.0);
+  youngModulus[7] = 5000.0;
+  tetrahedra.computeConstants(grid.mesh.points, youngModulus, kPoissonRatio, pool);
+  return tetrahedra;
+}
+
+/// df of three products at the positions of one addForce, each from zero.
+std::vector<std::vector<Vec3d>> threeProducts(Tetrahedra& tetrahedra, const std::vector<Vec3d>& x,
+                                              const std::vector<std::vector<Vec3d>>& dx,
+                                              const ThreadPool& pool) {
+  std::vector<Vec3d> f(x.size(), Vec3d::Zero());
+  tetrahedra.addForce(fem::RotationMethod::large, x, f, pool);
+  std::vector<std::vector<Vec3d>> df;
+  for (const std::vector<Vec3d>& d : dx) {
+    df.emplace_back(x.size(), Vec3d::Zero());
+    tetrahedra.addDForce(d, df.back(), -0.3, pool);
+  }
+  return df;
+}
+
+TEST(CorotationalElements, TetrahedronProductsAtOnePointAgreeWithTheElementLoop) {
+  const Grid grid;
+  const std::vector<Vec3d> x = deformed(grid.mesh.points);
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::vector<std::vector<Vec3d>> dx(3, std::vector<Vec3d>(x.size()));
+  for (auto& d : dx)
+    for (Vec3d& v : d) v = Vec3d(unit(rng), unit(rng), unit(rng));
+  const ThreadPool one(1), two(2);
+  Tetrahedra tetrahedra = makeTetrahedra(grid, one);
+  const auto df = threeProducts(tetrahedra, x, dx, one);
+  // The element loop on each dx: the first product at a point of a fresh model.
+  for (std::size_t k = 0; k < dx.size(); ++k) {
+    Tetrahedra fresh = makeTetrahedra(grid, one);
+    const auto expected = threeProducts(fresh, x, {dx[k]}, one)[0];
+    EXPECT_LT((flatten(df[k]) - flatten(expected)).norm(), 1e-13 * flatten(expected).norm())
+        << "product " << k;
+  }
+  // Later points: the blocks from the first product on, refilled at each point.
+  const auto again = threeProducts(tetrahedra, deformed(x), dx, one);
+  Tetrahedra fresh = makeTetrahedra(grid, one);
+  const auto expected = threeProducts(fresh, deformed(x), {dx[0]}, one)[0];
+  EXPECT_LT((flatten(again[0]) - flatten(expected)).norm(), 1e-13 * flatten(expected).norm());
+  // The same numbers on two threads.
+  Tetrahedra parallel = makeTetrahedra(grid, two);
+  EXPECT_EQ(threeProducts(parallel, x, dx, two), df);
 }
 
 }  // namespace
