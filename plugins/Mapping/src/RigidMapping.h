@@ -37,9 +37,10 @@ class RigidMapping final : public Mapping<Rigid3Types, Vec3Types> {
                             "Count index from the last frame (0 is the last)."};
   Data<std::vector<unsigned>> d_rigidIndexPerPoint{
       this, "rigidIndexPerPoint", {}, "Frame of each mapped point (nbOutput); default: index."};
-  Data<bool> d_globalToLocalCoords{this, "globalToLocalCoords", true,
+  Data<bool> d_globalToLocalCoords{this, "globalToLocalCoords", false,
                                    "The output's initial positions are in world coordinates "
-                                   "(converted to the frames' local ones at init)."};
+                                   "(converted to the frames' local ones at init); false (SOFA's "
+                                   "default): they are already local to their frames."};
   Data<bool> d_useX0{this, "useX0", false,
                      "SOFA option, accepted: the local points are kept from init."};
   Data<int> d_geometricStiffness{this,

@@ -35,7 +35,8 @@ TEST(RigidMapping, WorldPositionsBecomeLocalPointsAndStayPut) {
   Runtime runtime;
   Scene scene(runtime);
   ASSERT_TRUE(
-      scene.loadString(framesScene(R"(template="Rigid3,Vec3" rigidIndexPerPoint="0 0 1 1 1")",
+      scene.loadString(framesScene(R"(template="Rigid3,Vec3" rigidIndexPerPoint="0 0 1 1 1"
+                                      globalToLocalCoords="1")",
                                    R"(position="1 0 0  0 2 1  -1 -1 -1  3 0.5 0  0 0 0")")))
       << problems(scene.log());
   EXPECT_EQ(problems(scene.log()), "");
@@ -59,10 +60,10 @@ TEST(RigidMapping, WorldPositionsBecomeLocalPointsAndStayPut) {
 TEST(RigidMapping, LocalPointsAreTurnedAndMovedWithTheirFrame) {
   Runtime runtime;
   Scene scene(runtime);
-  // globalToLocalCoords="false": the output positions are local coordinates; no template:
-  // deduced from the Vec3d state beside the mapping.
+  // Without globalToLocalCoords (false, SOFA's default) the output positions are local
+  // coordinates; no template: deduced from the Vec3d state beside the mapping.
   ASSERT_TRUE(scene.loadString(
-      framesScene(R"(globalToLocalCoords="false" index="1")", R"(position="1 0 0  0 0 2")")))
+      framesScene(R"(index="1")", R"(position="1 0 0  0 0 2")")))
       << problems(scene.log());
   auto* mapping = findInScene<PointsOnFrames>(scene.root());
   ASSERT_NE(mapping, nullptr);
@@ -120,7 +121,7 @@ std::string bodyScene(const std::string& gravity, const std::string& extra) {
       <Node name="Points">
         <MechanicalObject name="points" position="1 2 3  2 2 3  1 3.5 3  1 2 5"/>
         <UniformMass vertexMass="0.5"/>
-        <RigidMapping/>
+        <RigidMapping globalToLocalCoords="1"/>
         )" +
          extra + R"(
       </Node>
@@ -190,7 +191,7 @@ TEST(RigidMapping, SpringsBetweenTwoFramesAssembleAsJTKJ) {
                                std::string(kFrames) + R"("/>
       <Node name="Points">
         <MechanicalObject name="points" position="1 0 0  0 2 1  -1 -1 -1  3 0.5 0  0 0 0"/>
-        <RigidMapping rigidIndexPerPoint="0 0 1 1 1"/>
+        <RigidMapping rigidIndexPerPoint="0 0 1 1 1" globalToLocalCoords="1"/>
         <UniformMass vertexMass="0.3"/>
         <TestSprings stiffness="40" edges="0 2  0 3  1 4  1 2  0 1"/>
       </Node>
