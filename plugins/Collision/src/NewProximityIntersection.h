@@ -7,13 +7,14 @@
 namespace stroma {
 
 /// SOFA's NewProximityIntersection: MinProximityIntersection's tests, and triangles against
-/// triangles through their own vertices and edges (PrimitiveIntersection.h), so that two
-/// triangle models collide without point and line models beside them.
+/// triangles through their own vertices (PrimitiveIntersection.h), so that two triangle models
+/// collide without point models beside them; their edges against each other only with
+/// useLineLine, as SOFA (its falling beam then has SOFA's contacts: 276 rows, not 393).
 class NewProximityIntersection final : public Intersection {
  public:
   Data<bool> d_useLineLine{this, "useLineLine", false,
-                           "Test segment models against segment models (triangle pairs test "
-                           "their edges whatever this says)."};
+                           "Test segments against segments: line models, and the edges of two "
+                           "triangles."};
 
   void init() override { m_distances.check(); }
   double alarmDistance() const override { return m_distances.d_alarmDistance.value(); }

@@ -253,7 +253,7 @@ bool spherePrimitive(const Side& A, std::uint32_t i, const Side& B, std::uint32_
 // NewProximityIntersection: two triangles through their owned features (see the header).
 template <class Emit>
 void triangleTriangle(const Side& A, std::uint32_t i, const Side& B, std::uint32_t j, double limit,
-                      Emit&& emit) {
+                      bool edges, Emit&& emit) {
   const auto &ta = A.g.triangles[i], &tb = B.g.triangles[j];
   const std::uint8_t ownA = A.g.featureOwnership[i], ownB = B.g.featureOwnership[j];
   // A's owned vertices against B.
@@ -286,7 +286,7 @@ void triangleTriangle(const Side& A, std::uint32_t i, const Side& B, std::uint32
                      unitOr(q - r.closest, r.distance, n), r.distance));
   }
   // Owned edges against owned edges, interiors only.
-  for (int ka = 0; ka < 3; ++ka) {
+  for (int ka = 0; ka < 3 && edges; ++ka) {
     if (!(ownA >> (3 + ka) & 1u)) continue;
     const Vec3d &p0 = A.g.points[ta[ka]], &p1 = A.g.points[ta[(ka + 1) % 3]];
     for (int kb = 0; kb < 3; ++kb) {
@@ -407,7 +407,7 @@ void intersectModels(const CollisionModel& first, const CollisionModel& second,
     with([](auto&&... a) { return lineLine(a...); });
   else
     run([&](std::uint32_t i, std::uint32_t j, Contact&) {
-      triangleTriangle(A, i, B, j, limit, emit);
+      triangleTriangle(A, i, B, j, limit, s.useLineLine, emit);
     });
 }
 

@@ -19,7 +19,7 @@
 //   box-X             GJK/EPA made exact (BoxIntersection.h): a face contact gives the points
 //                     of the contact polygon, an edge or vertex contact the closest points
 //   triangle-triangle (NewProximityIntersection only) each triangle's owned vertices against
-//                     the other, and the interiors of their owned edges
+//                     the other, and with useLineLine the interiors of their owned edges
 // "Interior" excludes parameters within 1e-6 of an end, as SOFA does.
 #pragma once
 
