@@ -218,6 +218,14 @@ bool MechanicalOperations::contains(const BaseMechanicalState* state) const {
   return std::find(m_states.begin(), m_states.end(), state) != m_states.end();
 }
 
+bool MechanicalOperations::independentOffset(const BaseMechanicalState* state,
+                                             std::size_t& offset) const {
+  const auto it = std::find(m_independent.begin(), m_independent.end(), state);
+  if (it == m_independent.end()) return false;
+  offset = m_offsets[static_cast<std::size_t>(it - m_independent.begin())];
+  return true;
+}
+
 Eigen::SparseMatrix<double> MechanicalOperations::totalJacobian(const BaseMechanicalState* state) {
   const auto n = static_cast<Eigen::Index>(m_systemSize);
   const auto it = std::find(m_independent.begin(), m_independent.end(), state);

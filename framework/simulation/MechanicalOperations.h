@@ -120,6 +120,9 @@ class MechanicalOperations {
   Eigen::SparseMatrix<double> totalJacobian(const BaseMechanicalState* state);
   /// Whether `state` is one of this solver's states (independent or mapped).
   bool contains(const BaseMechanicalState* state) const;
+  /// Where an independent state's dofs start in the system (its totalJacobian is the identity
+  /// there); false for a mapped state or one outside this system.
+  bool independentOffset(const BaseMechanicalState* state, std::size_t& offset) const;
 
  private:
   void collect(Node& node, bool isSolverNode);

@@ -127,7 +127,7 @@ bool FreeMotionAnimationLoop::solveConstraints(Node& root, double dt, Timing& ti
   // Each solver's rows, carried to its independent states, and its compliance.
   m_problem.W.setZero(m, m);
   std::vector<SolverSystem> systems;
-  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<Eigen::Triplet<double>> triplets, systemTriplets;
   for (auto& [node, solver] : m_solvers) {
     SolverSystem system;
     system.solver = solver;
@@ -135,19 +135,33 @@ bool FreeMotionAnimationLoop::solveConstraints(Node& root, double dt, Timing& ti
     MechanicalOperations& mop = *system.mop;
     const auto n = static_cast<Eigen::Index>(mop.systemSize());
     system.H.resize(m, n);
+    // Rows on an independent state go straight to its columns; rows on a mapped state are
+    // carried through the product of its mappings' Jacobians.
     bool any = false;
+    systemTriplets.clear();
     for (std::size_t s = 0; s < m_rows.states().size(); ++s) {
       const BaseMechanicalState* state = m_rows.states()[s];
       if (!mop.contains(state)) continue;
+      any = true;
+      std::size_t offset = 0;
+      if (mop.independentOffset(state, offset)) {
+        for (const ConstraintRows::Entry& e : m_rows.entriesOf(s))
+          systemTriplets.emplace_back(static_cast<Eigen::Index>(e.row),
+                                      static_cast<Eigen::Index>(offset + e.dof), e.value);
+        continue;
+      }
       triplets.clear();
       for (const ConstraintRows::Entry& e : m_rows.entriesOf(s))
         triplets.emplace_back(static_cast<Eigen::Index>(e.row), static_cast<Eigen::Index>(e.dof),
                               e.value);
       RowMatrix onState(m, static_cast<Eigen::Index>(state->matrixSize()));
       onState.setFromTriplets(triplets.begin(), triplets.end());
-      system.H += RowMatrix(onState * mop.totalJacobian(state));
-      any = true;
+      const RowMatrix carried = onState * mop.totalJacobian(state);
+      for (Eigen::Index r = 0; r < carried.outerSize(); ++r)
+        for (RowMatrix::InnerIterator it(carried, r); it; ++it)
+          systemTriplets.emplace_back(it.row(), it.col(), it.value());
     }
+    system.H.setFromTriplets(systemTriplets.begin(), systemTriplets.end());
     if (!any) continue;
     // The forces on the states are H^T lambda with every column (an instrument moved by an
     // imposed motion feels its contacts); the compliance and the correction leave out the
