@@ -15,6 +15,10 @@ packages=(
   libbullet-dev  # dynamic AABB trees of collision detection (Collision)
   calculix-ccx   # independent FE reference runs (share/reference/calculix/cantilever_ccx.py)
   clang libclang-rt-14-dev   # libFuzzer and LeakSanitizer for the fuzz and leak tests
+  libosmesa6-dev libpng-dev   # headless rendering to PNG (stroma render, Rendering plugin)
+  libglfw3-dev   # the interactive viewer (stroma view, Viewer plugin)
+  xvfb xauth   # a virtual display for the viewer's tests
+  python3-meshio   # an independent reader of the exported VTU files, in their test
 )
 
 missing=()
