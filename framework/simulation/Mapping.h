@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <type_traits>
+#include <vector>
+
 #include <Eigen/Sparse>
 
 #include "core/Link.h"
@@ -26,6 +29,16 @@ class BaseMapping : public Base {
   virtual void applyTransposed(VecId inF, VecId outF) = 0;
   /// J, (output matrixSize) x (input matrixSize), at the current positions.
   virtual const Eigen::SparseMatrix<double>& jacobian() = 0;
+
+  /// A visual output (OglModel, ...), or nullptr. Batch runs never map it.
+  virtual Base* visualOutput() const = 0;
+  /// Maps the input's current positions onto the points of a visual output; renderers only.
+  /// On the first call `points` holds the output's points as the scene places them (its rest
+  /// shape), from which the mapping prepares what init() prepares for a state output (the
+  /// barycentric coordinates, the local coordinates in a frame...); every call then overwrites
+  /// them. Returns false when there is no visual output or it cannot be mapped (the reason is
+  /// reported once, as an error of the mapping).
+  virtual bool applyToVisual(std::vector<Vec3d>& points) = 0;
 };
 
 template <class In, class Out>
@@ -49,8 +62,7 @@ class Mapping : public BaseMapping {
   InState* input() const { return m_input; }
   /// The mechanical output, or nullptr when the output is a visual model.
   OutState* output() const { return m_output; }
-  /// A visual output (OglModel, ...), or nullptr. Batch runs never map it.
-  Base* visualOutput() const { return m_visualOutput; }
+  Base* visualOutput() const final { return m_visualOutput; }
   BaseMechanicalState* fromState() const final { return input(); }
   BaseMechanicalState* toState() const final { return output(); }
 
@@ -58,12 +70,38 @@ class Mapping : public BaseMapping {
   /// when it returns false (after it reported the error).
   void init() override { findStates(); }
 
+  bool applyToVisual(std::vector<Vec3d>& points) final {
+    if constexpr (std::is_same_v<OutVecCoord, std::vector<Vec3d>>) {
+      if (!m_visualOutput || !m_input || m_visualState == VisualState::failed) return false;
+      if (m_visualState == VisualState::unprepared) {
+        const bool ready = prepareVisual(points);
+        m_visualState = ready ? VisualState::ready : VisualState::failed;
+        if (!ready) return false;
+      }
+      apply(points, m_input->readCoord(VecId::position()));
+      return true;
+    } else {
+      (void)points;
+      return false;
+    }
+  }
+
  protected:
+  /// Prepares the mapping for a visual output whose points at rest are `points`, as init()
+  /// does for a state output; false (after reporting why) when it cannot. Mappings onto Vec3d
+  /// points that can drive a drawn surface override it.
+  virtual bool prepareVisual(const OutVecCoord& points) {
+    (void)points;
+    this->msgError("cannot map a visual output", "output");
+    return false;
+  }
+
   bool findStates() {
     Node* node = this->node();
     m_input = nullptr;
     m_output = nullptr;
     m_visualOutput = nullptr;
+    m_visualState = VisualState::unprepared;
     Base* in = l_input.get();
     if (auto* n = dynamic_cast<Node*>(in)) in = n->template get<BaseMechanicalState>();
     if (!l_input && node && node->parent()) in = node->parent()->template getUp<InState>();
@@ -98,9 +136,11 @@ class Mapping : public BaseMapping {
     return node.template get<VisualModel>();
   }
 
+  enum class VisualState { unprepared, ready, failed };
   InState* m_input = nullptr;
   OutState* m_output = nullptr;
   Base* m_visualOutput = nullptr;
+  VisualState m_visualState = VisualState::unprepared;
 
  public:
   virtual void apply(OutVecCoord& out, const InVecCoord& in) = 0;

@@ -23,7 +23,24 @@ const Topology* BarycentricMapping::findTopology() {
 void BarycentricMapping::init() {
   if (!findStates()) return;
   m_options.warnUnsupported(*this, output() != nullptr);
-  if (!output()) return;
+  if (!output()) return;  // a visual output is embedded when first drawn (prepareVisual)
+  const bool rest = d_useRestPosition.value();
+  const VecId inputPoints = rest ? VecId::restPosition() : VecId::position();
+  if (!embedOutput(output()->readCoord(inputPoints), inputPoints)) return;
+  applyAtInit(*this, m_options.applyRestPosition.value());
+}
+
+// A visual output is embedded when first drawn, maybe after steps: in the input's points of
+// the start (reset positions, those init() would have used) unless useRestPosition says rest.
+bool BarycentricMapping::prepareVisual(const OutVecCoord& points) {
+  const bool rest = d_useRestPosition.value() ||
+                    input()->readCoord(VecId::resetPosition()).size() != input()->size();
+  return embedOutput(points, rest ? VecId::restPosition() : VecId::resetPosition());
+}
+
+// The element and weights of each output point, from the input's points `inputPoints` and the
+// output's; false after an error.
+bool BarycentricMapping::embedOutput(const std::vector<Vec3d>& points, VecId inputPoints) {
   const Topology* topology = findTopology();
   if (!topology) {
     if (isValid())
@@ -31,7 +48,7 @@ void BarycentricMapping::init() {
                    ": the input's points need tetrahedra or hexahedra (MeshTopology, "
                    "TetrahedronSetTopologyContainer, RegularGridTopology, ...)",
                "input_topology");
-    return;
+    return false;
   }
   const auto& tetrahedra = topology->tetrahedra();
   const auto& hexahedra = topology->hexahedra();
@@ -40,11 +57,9 @@ void BarycentricMapping::init() {
                  " has no tetrahedra nor hexahedra: mapping onto surfaces or "
                  "lines is not supported",
              "input_topology");
-    return;
+    return false;
   }
-  const bool rest = d_useRestPosition.value();
-  const auto& nodes = input()->readCoord(rest ? VecId::restPosition() : VecId::position());
-  const auto& points = output()->readCoord(rest ? VecId::restPosition() : VecId::position());
+  const auto& nodes = input()->readCoord(inputPoints);
 
   // Every element must index the input's points.
   auto checkIndices = [&](const auto& elements, const char* kind) {
@@ -59,7 +74,8 @@ void BarycentricMapping::init() {
         }
     return true;
   };
-  if (!checkIndices(tetrahedra, "tetrahedron") || !checkIndices(hexahedra, "hexahedron")) return;
+  if (!checkIndices(tetrahedra, "tetrahedron") || !checkIndices(hexahedra, "hexahedron"))
+    return false;
 
   std::vector<Index> degenerate;
   m_points = barycentric::embedPoints(nodes, tetrahedra, hexahedra, points, &degenerate);
@@ -79,7 +95,7 @@ void BarycentricMapping::init() {
       msgError("output point " + std::to_string(k) + " could not be placed in any element of " +
                    topology->path(),
                "input_topology");
-      return;
+      return false;
     }
     if (m_points[k].distance > 0) {
       if (outside == 0 || m_points[k].distance > m_points[farthest].distance) farthest = k;
@@ -93,7 +109,7 @@ void BarycentricMapping::init() {
                    std::to_string(farthest) + ", is at " +
                    std::to_string(m_points[farthest].distance) + ")",
                "output");
-  applyAtInit(*this, m_options.applyRestPosition.value());
+  return true;
 }
 
 void BarycentricMapping::embed(const std::vector<std::size_t>& which) {

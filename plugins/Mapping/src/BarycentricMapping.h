@@ -53,8 +53,12 @@ class BarycentricMapping final : public Mapping<Vec3Types, Vec3Types> {
   /// How many times an output point was re-attached because its tetrahedron was removed.
   std::size_t reattachedCount() const { return m_reattached; }
 
+ protected:
+  bool prepareVisual(const OutVecCoord& points) override;
+
  private:
   const Topology* findTopology();
+  bool embedOutput(const std::vector<Vec3d>& points, VecId inputPoints);
   /// Follows the topology's changes since the embedding was made.
   void refresh();
   /// Embeds the output points `which` (all when empty) in the current elements.

@@ -28,6 +28,10 @@ class IdentityMapping final : public Mapping<DataTypes, DataTypes> {
   /// The identity, (n x derivSize) square.
   const Eigen::SparseMatrix<double>& jacobian() override;
 
+ protected:
+  /// A visual output takes the input's points as they are.
+  bool prepareVisual(const OutVecCoord&) override { return true; }
+
  private:
   Eigen::SparseMatrix<double> m_J;
 };

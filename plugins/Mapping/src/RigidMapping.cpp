@@ -10,20 +10,28 @@ void RigidMapping::init() {
     msgWarning("geometricStiffness=" + std::to_string(d_geometricStiffness.value()) +
                    " is not implemented: J^T f is linearized with J only",
                "geometricStiffness");
-  if (!output()) return;
-  if (!computeLocalPoints()) return;
+  if (!output()) return;  // a visual output is prepared when first drawn (prepareVisual)
+  if (!computeLocalPoints(output()->readCoord(VecId::position()), VecId::position())) return;
   const bool resized = resizeOutput(*output(), m_local.size());
   applyAtInit(*this, resized || m_options.applyRestPosition.value());
 }
 
-// The frame of each point and its local coordinates; false after an error.
-bool RigidMapping::computeLocalPoints() {
-  const auto& frames = input()->readCoord(VecId::position());
+// A visual output is prepared when first drawn, maybe after steps: world points are made local
+// in the frames of the start (reset positions, those init() would have used).
+bool RigidMapping::prepareVisual(const OutVecCoord& points) {
+  const bool started = input()->readCoord(VecId::resetPosition()).size() == input()->size();
+  return computeLocalPoints(points, started ? VecId::resetPosition() : VecId::position());
+}
+
+// The frame of each point and its local coordinates, the points of the output being
+// `outputPoints` and the frames `frameId`; false after an error.
+bool RigidMapping::computeLocalPoints(const std::vector<Vec3d>& outputPoints, VecId frameId) {
+  const auto& frames = input()->readCoord(frameId);
   const std::size_t nbFrames = frames.size();
   const bool given = !d_points.value().empty() || !d_initialPoints.value().empty();
   const std::vector<Vec3d>& points = !d_points.value().empty() ? d_points.value()
                                      : given                   ? d_initialPoints.value()
-                                             : output()->readCoord(VecId::position());
+                                             : outputPoints;
   const std::size_t n = points.size();
   if (n == 0) msgWarning("maps no point: give points or positions to the output", "points");
 

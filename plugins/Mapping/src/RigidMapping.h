@@ -63,8 +63,11 @@ class RigidMapping final : public Mapping<Rigid3Types, Vec3Types> {
   const std::vector<Vec3d>& localPoints() const { return m_local; }
   const std::vector<unsigned>& frames() const { return m_frame; }
 
+ protected:
+  bool prepareVisual(const OutVecCoord& points) override;
+
  private:
-  bool computeLocalPoints();
+  bool computeLocalPoints(const std::vector<Vec3d>& outputPoints, VecId frameId);
   std::vector<Vec3d> m_local;
   std::vector<unsigned> m_frame;
   Eigen::SparseMatrix<double> m_J;

@@ -8,14 +8,21 @@ namespace stroma {
 void SubsetMapping::init() {
   if (!findStates()) return;
   m_options.warnUnsupported(*this, output() != nullptr);
-  if (!output()) return;
-  if (!computeIndices()) return;
+  if (!output()) return;  // a visual output is prepared when first drawn (prepareVisual)
+  if (!computeIndices(output()->readCoord(VecId::position()), VecId::position())) return;
   const bool resized = resizeOutput(*output(), d_indices.value().size());
   applyAtInit(*this, resized || m_options.applyRestPosition.value());
 }
 
-// The indices as given, from first..last, or by matching positions; false after an error.
-bool SubsetMapping::computeIndices() {
+// A visual output is matched, when first drawn, to the input's points of the start.
+bool SubsetMapping::prepareVisual(const OutVecCoord& points) {
+  const bool started = input()->readCoord(VecId::resetPosition()).size() == input()->size();
+  return computeIndices(points, started ? VecId::resetPosition() : VecId::position());
+}
+
+// The indices as given, from first..last, or by matching the output's points `xout` to the
+// input's `inputPoints`; false after an error.
+bool SubsetMapping::computeIndices(const std::vector<Vec3d>& xout, VecId inputPoints) {
   const std::size_t n = input()->size();
   if (!d_indices.value().empty()) {
     std::string bad;
@@ -44,8 +51,7 @@ bool SubsetMapping::computeIndices() {
     return true;
   }
   // Match each output point to the nearest input point (brute force, once, at init).
-  const auto& xin = input()->readCoord(VecId::position());
-  const auto& xout = output()->readCoord(VecId::position());
+  const auto& xin = input()->readCoord(inputPoints);
   const double radius = d_radius.value();
   std::vector<unsigned> found;
   std::size_t missing = 0, firstMissing = 0;

@@ -53,8 +53,11 @@ class SubsetMapping final : public Mapping<Vec3Types, Vec3Types> {
   /// nbOutput*3 x nbInput*3, one 3x3 identity block per output point.
   const Eigen::SparseMatrix<double>& jacobian() override;
 
+ protected:
+  bool prepareVisual(const OutVecCoord& points) override;
+
  private:
-  bool computeIndices();
+  bool computeIndices(const std::vector<Vec3d>& xout, VecId inputPoints);
   Eigen::SparseMatrix<double> m_J;
   std::uint64_t m_jacobianVersion = ~std::uint64_t{0};
 };

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "OglModel.h"
 #include "VisualComponents.h"
 #include "core/Plugin.h"
 
