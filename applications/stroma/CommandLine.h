@@ -42,6 +42,10 @@ int listCommand(const std::vector<std::string>& args);
 int docCommand(const std::vector<std::string>& args);
 int pluginIndexCommand(const std::vector<std::string>& args);
 int benchCommand(const std::vector<std::string>& args);  ///< BenchCommand.cpp
+/// Runs `command` from the module lib<module>.so of the plugin folders (ModuleCommand.cpp):
+/// dlopen, then `entry`(argc, argv) with the arguments after the command.
+int moduleCommand(const std::string& command, const std::string& module, const std::string& entry,
+                  const std::vector<std::string>& args);
 
 /// Prints "stroma: <text>" to stderr and returns kBadInput.
 int usageError(const std::string& text);

@@ -49,6 +49,26 @@ const CommandHelp kCommands[] = {
       --save-scenes                 also write each row's scene as DIR/STUDY-scenes/rowN.scn
       --verbose                     print the scenes' info messages too
 )", false},
+    {"render", R"(  stroma render SCENE [options]     run a scene as `run` does and take pictures of it offscreen
+                                    (OSMesa): DIR/frame_00000.png... at step 0, every K steps
+                                    and at the last step
+      -n STEPS                      number of time steps (default 100)
+      --every K                     a frame every K steps (default: STEPS, so the first and
+                                    the last frame only)
+      --out DIR                     folder of the PNG frames (default frames; created)
+      --size WxH                    picture size in pixels, 1 to 16384 each (default 640x480)
+      --camera "px py pz lx ly lz"  eye and point looked at (default: the scene's
+                                    InteractiveCamera, else a view of the whole scene)
+      --color-map displacement|vonmises
+                                    color the bodies by |x - x_rest| (m) or von Mises stress
+                                    (Pa), with a legend; --no-legend leaves it out
+      --video FILE.mp4              also pipe the frames to ffmpeg (must be on PATH; PNG files
+                                    then only with --out)
+      --dt DT, --threads N          as for run
+    Exit codes: 0 frames written (a frame with nothing drawn is a warning), 1 a step failed or
+    a frame could not be written, 2 bad input (options, scene, output folder, size, color map
+    with nothing to color, ffmpeg missing), all refused before the first step.
+)", true},
     {"list", R"(  stroma list [--plugin NAME]       available components, by plugin
 )", false},
     {"doc", R"(  stroma doc COMPONENT [--template T]

@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,9 @@ struct FrameReport {
   bool colorMapped = false;   ///< a field colored something this frame
   double colorMin = 0, colorMax = 0;
   std::string legendMin, legendMax;  ///< the numbers the legend wrote
+  /// Where it wrote them (top-left pixels, y downwards) and at what scale (BitmapFont.h), so
+  /// that a test can read them back from the picture.
+  int legendMinX = 0, legendMinY = 0, legendMaxX = 0, legendMaxY = 0, legendScale = 1;
   std::string colorMapError;         ///< why nothing was colored (no such field)
   std::size_t drawn() const { return triangles + lines + points; }
 };
@@ -83,6 +87,12 @@ class SceneDrawer {
   void releaseGLResources();
 
  private:
+  void drawColoredBodies(const DisplayFlags& flags);
+  void drawVisualModels(const DisplayFlags& flags, const std::set<const Node*>& skipped);
+  void drawElementMeshes(const DisplayFlags& flags, const std::set<const Node*>& skipped);
+  void drawStates();
+  void drawCollisionModels(const DisplayFlags& flags);
+
   struct Impl;
   Node& m_root;
   DrawOptions m_options;
