@@ -69,6 +69,29 @@ const CommandHelp kCommands[] = {
     a frame could not be written, 2 bad input (options, scene, output folder, size, color map
     with nothing to color, ffmpeg missing), all refused before the first step.
 )", true},
+    {"view", R"(  stroma view SCENE [options]       show a scene in a window and run it interactively
+      --size WxH                    window size in pixels (default 1280x720)
+      --animate                     start running (else paused, unless the scene's root
+                                    says animate="1")
+      --spring-stiffness K          stiffness of the mouse spring (N/m; default 1000 N/m
+                                    per kg of the grabbed body)
+      --threads N                   threads for parallel element loops (default: all cores)
+      --frames N                    quit after N frames (scripts and tests)
+      --data-path DIR, --verbose    as for run
+    Keys and mouse (plugins/Viewer/README.md says the same):
+      left drag                     orbit around the point looked at
+      right or middle drag          pan
+      wheel                         zoom
+      shift + left press and drag   pull the body with a spring toward the mouse (the
+                                    nearest vertex of the surface under the mouse;
+                                    released with the button)
+      space                         play / pause
+      n or right arrow              one step (and pause)
+      r                             reset: load the scene again from its file
+      h                             hide / show the text
+      q or escape                   quit
+    Needs a display (DISPLAY; else exit code 2) and GLFW 3 at build time (libglfw3-dev).
+)", false},
     {"list", R"(  stroma list [--plugin NAME]       available components, by plugin
 )", false},
     {"doc", R"(  stroma doc COMPONENT [--template T]

@@ -39,6 +39,8 @@ int main(int argc, char** argv) {
     if (command == "run") return runCommand(rest);
     if (command == "check") return checkCommand(rest);
     if (command == "bench") return benchCommand(rest);
+    if (command == "view")
+      return moduleCommand("view", "StromaViewer", "stroma_viewer_main", rest);
     if (command == "render")
       return moduleCommand("render", "StromaRenderCommand", "stroma_render_main", rest);
     if (command == "list") return listCommand(rest);
