@@ -3,7 +3,9 @@
 
 #include <GL/osmesa.h>
 
+#include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <new>
 
 namespace stroma::rendering {
@@ -12,8 +14,34 @@ OffscreenContext::~OffscreenContext() {
   if (m_context) OSMesaDestroyContext(static_cast<OSMesaContext>(m_context));
 }
 
+namespace {
+
+/// MemAvailable of /proc/meminfo in bytes, 0 when unknown.
+double availableMemory() {
+  std::ifstream in("/proc/meminfo");
+  std::string key;
+  double kib = 0;
+  std::string unit;
+  while (in >> key >> kib >> unit)
+    if (key == "MemAvailable:") return kib * 1024.0;
+  return 0;
+}
+
+}  // namespace
+
 bool OffscreenContext::create(int width, int height, std::string& error) {
   const std::string size = std::to_string(width) + " x " + std::to_string(height);
+  // Our color buffer, OSMesa's color and depth buffers, the frame read back and PNG rows:
+  // about 16 bytes a pixel. Refusing beats being killed by the kernel halfway through.
+  const double needed = 16.0 * width * height, available = availableMemory();
+  if (available > 0 && needed > available) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "a picture of %s pixels needs about %.1f GiB of memory, %.1f GiB are available",
+                  size.c_str(), needed / (1 << 30), available / (1 << 30));
+    error = text;
+    return false;
+  }
   try {
     m_buffer.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4, 0);
   } catch (const std::bad_alloc&) {

@@ -31,6 +31,8 @@ LegendPlacement drawLegend(ColorMapKind kind, double min, double max, int width,
   out.minText = legendNumber(min);
   out.maxText = legendNumber(max);
   std::string title = std::string(colorMapName(kind)) + " (" + colorMapUnit(kind) + ")";
+  // In a small picture the field's name would take a quarter of it: the unit alone then.
+  if (textWidth(title, out.scale) > width / 4) title = std::string("(") + colorMapUnit(kind) + ")";
   // Upper case: the font's lower-case 'e' is for exponents only.
   for (char& c : title) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
 

@@ -302,9 +302,11 @@ void SceneDrawer::drawStates() {
       m_report.points += drawPoints(statePoints(*state), 3.0);
       return;
     }
-    // Fixed points: SOFA's FixedProjectiveConstraint (FixedConstraint) and the like, by name.
-    if (!object.className().starts_with("Fixed") || !object.findData("indices") || !object.node())
-      return;
+    // Fixed points: SOFA's FixedProjectiveConstraint (FixedConstraint), PartialFixed...,
+    // BoxConstraint (fixed points chosen by boxes), by class name and their `indices`.
+    const std::string& kind = object.className();
+    const bool fixes = kind.find("Fixed") != std::string::npos || kind == "BoxConstraint";
+    if (!fixes || !object.findData("indices") || !object.node()) return;
     const BaseState* state = object.node()->get<BaseState>();
     if (!state) return;
     const std::vector<Vec3d> points = statePoints(*state);

@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "SceneReading.h"
 
-#include <algorithm>
-#include <cctype>
 #include <charconv>
 #include <sstream>
 
 #include "core/Base.h"
 #include "core/Node.h"
+#include "simulation/Color.h"
 
 namespace stroma::rendering {
 
@@ -51,36 +50,10 @@ bool isDataSet(const Base& object, std::string_view dataName) {
 }
 
 bool parseColor(std::string_view text, Vec4d& color) {
-  std::string word(text);
-  word.erase(std::remove_if(word.begin(), word.end(), [](unsigned char c) { return std::isspace(c); }),
-             word.end());
-  std::transform(word.begin(), word.end(), word.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  struct Named {
-    const char* name;
-    Vec4d rgba;
-  };
-  static const Named kNames[] = {
-      {"white", {1, 1, 1, 1}},   {"black", {0, 0, 0, 1}},   {"red", {1, 0, 0, 1}},
-      {"green", {0, 1, 0, 1}},   {"blue", {0, 0, 1, 1}},    {"cyan", {0, 1, 1, 1}},
-      {"magenta", {1, 0, 1, 1}}, {"yellow", {1, 1, 0, 1}},  {"gray", {0.5, 0.5, 0.5, 1}},
-      {"grey", {0.5, 0.5, 0.5, 1}}};
-  for (const Named& n : kNames)
-    if (word == n.name) {
-      color = n.rgba;
-      return true;
-    }
-  std::istringstream in{std::string(text)};
-  std::vector<double> values;
-  std::string token;
-  while (in >> token) {
-    double value = 0;
-    auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-    if (ec != std::errc() || ptr != token.data() + token.size()) return false;
-    values.push_back(value);
-  }
-  if (values.size() != 3 && values.size() != 4) return false;
-  color = Vec4d(values[0], values[1], values[2], values.size() == 4 ? values[3] : 1.0);
+  std::string error;
+  Vec4d parsed;
+  if (!stroma::parseColor(text, parsed, error)) return false;
+  color = parsed;
   return true;
 }
 

@@ -33,8 +33,8 @@ std::string readText(const Base& object, std::string_view dataName);
 /// Whether the Data exists and was given a value (by the scene, a link or code).
 bool isDataSet(const Base& object, std::string_view dataName);
 
-/// A color as SOFA writes it: "r g b" or "r g b a" in [0, 1], or a name (white, black, red,
-/// green, blue, cyan, magenta, yellow, gray/grey). False, unchanged, on anything else.
+/// A color as SOFA writes it (simulation/Color.h: a name, #hex, "r g b [a]"). False,
+/// unchanged, on anything else.
 bool parseColor(std::string_view text, Vec4d& color);
 
 }  // namespace stroma::rendering
