@@ -88,6 +88,8 @@ const CommandHelp kCommands[] = {
       space                         play / pause
       n or right arrow              one step (and pause)
       r                             reset: load the scene again from its file
+      s                             screenshot: the picture without the text, as
+                                    stroma-view-NNNN.png in the working folder
       h                             hide / show the text
       q or escape                   quit
     Needs a display (DISPLAY; else exit code 2) and GLFW 3 at build time (libglfw3-dev).

@@ -11,6 +11,7 @@
 #include "simulation/Scene.h"
 #include "simulation/VisualModel.h"
 #include "stroma/rendering/BitmapFont.h"
+#include "stroma/rendering/PngImage.h"
 #include "stroma/rendering/SceneBounds.h"
 #include "stroma/rendering/SceneDrawer.h"
 
@@ -162,6 +163,9 @@ void SceneViewer::key(int key, int action, int) {
     case GLFW_KEY_R:
       if (action == GLFW_PRESS) reset();
       break;
+    case GLFW_KEY_S:
+      if (action == GLFW_PRESS) m_screenshotRequested = true;
+      break;
     case GLFW_KEY_H:
       if (action == GLFW_PRESS) m_settings.showText = !m_settings.showText;
       break;
@@ -242,6 +246,36 @@ void SceneViewer::drawSpring() const {
   glPopAttrib();
 }
 
+void SceneViewer::saveScreenshot() {
+  m_screenshotRequested = false;
+  rendering::Image image;
+  image.width = m_width;
+  image.height = m_height;
+  image.rgba.resize(static_cast<std::size_t>(4) * m_width * m_height);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, m_width, m_height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  for (std::size_t i = 3; i < image.rgba.size(); i += 4) image.rgba[i] = 255;
+  rendering::flipRows(image);
+  std::filesystem::path file;
+  for (int n = 0; n < 10000; ++n) {
+    char name[32];
+    std::snprintf(name, sizeof name, "stroma-view-%04d.png", n);
+    std::error_code ec;
+    if (!std::filesystem::exists(name, ec)) {
+      file = name;
+      break;
+    }
+  }
+  std::string error;
+  if (file.empty())
+    m_notice = "no screenshot: stroma-view-0000.png to -9999.png all exist";
+  else if (rendering::writePng(file, image, error))
+    m_notice = "saved " + std::filesystem::absolute(file).string();
+  else
+    m_notice = "no screenshot: " + error;
+  std::cerr << "stroma view: " << m_notice << '\n';
+}
+
 std::vector<std::string> SceneViewer::statusLines() const {
   std::vector<std::string> lines;
   if (m_failed) return {"the scene failed to load: see the terminal; r to retry, q to quit"};
@@ -254,6 +288,7 @@ std::vector<std::string> SceneViewer::statusLines() const {
     lines.push_back("pulling point " + std::to_string(m_spring.picked().index) + " of " +
                     m_spring.picked().state->path() + "  k = " +
                     format("%g", m_spring.spring()->d_stiffness.value()) + " N/m");
+  if (!m_notice.empty()) lines.push_back(m_notice);
   return lines;
 }
 
@@ -262,6 +297,7 @@ void SceneViewer::drawFrame() {
     m_camera.fitClipPlanes(rendering::sceneBounds(m_scene.root()));
     m_drawer->draw(m_camera, m_width, m_height);
     drawSpring();
+    if (m_screenshotRequested) saveScreenshot();
   } else {  // the scene failed to load again: its graph is not there to draw
     glViewport(0, 0, m_width, m_height);
     glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
@@ -276,7 +312,8 @@ void SceneViewer::drawFrame() {
     rendering::drawText(line, kMargin, y, scale, Vec4d(1, 1, 1, 1), m_width, m_height);
     y += lineHeight;
   }
-  const std::string help = "space play/pause  n step  r reset  shift+drag pull  h text  q quit";
+  const std::string help =
+      "space play/pause  n step  r reset  shift+drag pull  s screenshot  h text  q quit";
   rendering::drawText(help, kMargin, m_height - kMargin - rendering::textHeight(1), 1,
                       Vec4d(0.8, 0.8, 0.8, 1), m_width, m_height);
 }

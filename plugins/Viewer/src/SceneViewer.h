@@ -75,6 +75,9 @@ class SceneViewer {
   Vec3d pullTarget(double x, double y) const;
   void fitCamera();
   void drawSpring() const;
+  /// Writes the picture just drawn (without the text) as the next free
+  /// stroma-view-NNNN.png of the working folder.
+  void saveScreenshot();
   void recordStep(double seconds);
 
   Scene& m_scene;
@@ -84,6 +87,8 @@ class SceneViewer {
   MouseSpringInteraction m_spring;
   int m_width = 800, m_height = 600;
   bool m_running = false, m_stepOnce = false, m_quit = false, m_failed = false;
+  bool m_screenshotRequested = false;
+  std::string m_notice;  ///< a line for the text: the last screenshot written, or why not
   Drag m_drag = Drag::none;
   /// Whether the camera still frames the whole scene as fitCamera() left it (not the scene's
   /// camera, not moved by the user): a resize then fits it again to the new shape.

@@ -7,9 +7,12 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include "ViewerWindow.h"
+#include "plugins/TestPlugin/TestSupport.h"
+#include "stroma/rendering/PngImage.h"
 #include "core/Node.h"
 #include "core/Runtime.h"
 #include "simulation/Scene.h"
@@ -203,6 +206,29 @@ TEST_F(SceneViewerTest, MouseMovesTheCameraAndKeysDriveTheSimulation) {
   EXPECT_FALSE(v.quitRequested());
   v.key(GLFW_KEY_Q, GLFW_PRESS, 0);
   EXPECT_TRUE(v.quitRequested());
+}
+
+TEST_F(SceneViewerTest, TheSKeyWritesTheNextScreenshotOfTheWorkingFolder) {
+  SceneViewer& v = makeViewer();
+  test::TempDir dir;
+  const std::filesystem::path before = std::filesystem::current_path();
+  std::filesystem::current_path(dir.path());
+  dir.write("stroma-view-0000.png", "taken");  // an existing one is kept, not overwritten
+  v.key(GLFW_KEY_S, GLFW_PRESS, 0);
+  v.drawFrame();
+  std::filesystem::current_path(before);
+  rendering::Image image;
+  std::string error;
+  ASSERT_TRUE(rendering::readPng(dir.path() / "stroma-view-0001.png", image, error)) << error;
+  EXPECT_EQ(image.width, v.width());
+  EXPECT_EQ(image.height, v.height());
+  // The beam is in it: the centre pixel is not the top-left corner's background.
+  const auto pixel = [&](int x, int y) {
+    const std::size_t i = 4 * (static_cast<std::size_t>(y) * image.width + x);
+    return Vec3d(image.rgba[i], image.rgba[i + 1], image.rgba[i + 2]);
+  };
+  EXPECT_GT((pixel(image.width / 2, image.height / 2) - pixel(0, 0)).norm(), 30.0);
+  EXPECT_NE(v.statusLines().back().find("saved"), std::string::npos);
 }
 
 }  // namespace
