@@ -242,9 +242,10 @@ int renderCommand(const std::vector<std::string>& args) {
   }
   drawer.releaseGLResources();
   const double total = secondsSince(start);
-  std::printf("Rendered %lld frames of %dx%d with %s in %.3f s: drawing %.3f s (%.1f frames/s), "
-              "writing %.3f s, stepping %.3f s\n",
+  std::printf("Rendered %lld frames of %dx%d with %s in %.3f s (%.1f frames/s): drawing %.3f s "
+              "(%.1f frames/s), writing %.3f s, stepping %.3f s\n",
               frames.frames(), o.width, o.height, context.renderer().c_str(), total,
+              total > 0 ? static_cast<double>(frames.frames()) / total : 0.0,
               frames.drawSeconds,
               frames.drawSeconds > 0 ? static_cast<double>(frames.frames()) / frames.drawSeconds : 0.0,
               frames.saveSeconds, stepSeconds);

@@ -2,6 +2,7 @@
 #include "stroma/rendering/DisplayFlags.h"
 
 #include <sstream>
+#include <vector>
 
 #include "SceneReading.h"
 #include "core/Node.h"
@@ -57,13 +58,14 @@ void DisplayFlags::apply(std::string_view words, std::string& unknown) {
 }
 
 DisplayFlags sceneDisplayFlags(const Node& node, std::string& unknown) {
+  // SOFA's styles nest: each VisualStyle from the root down to the node changes the flags its
+  // words name and keeps the others.
+  std::vector<const Node*> path;
+  for (const Node* n = &node; n; n = n->parent()) path.push_back(n);
   DisplayFlags flags;
-  for (const Node* n = &node; n; n = n->parent())
-    for (const auto& object : n->objects())
-      if (object->className() == "VisualStyle") {
-        flags.apply(readText(*object, "displayFlags"), unknown);
-        return flags;
-      }
+  for (auto it = path.rbegin(); it != path.rend(); ++it)
+    for (const auto& object : (*it)->objects())
+      if (object->className() == "VisualStyle") flags.apply(readText(*object, "displayFlags"), unknown);
   return flags;
 }
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "GlPrimitives.h"
@@ -76,6 +77,8 @@ bool underAny(const Node* node, const std::set<const Node*>& nodes) {
 
 struct SceneDrawer::Impl {
   TextureCache textures;
+  std::map<const Node*, DisplayFlags> nodeFlags;  ///< this frame's flags at each active node
+  DisplayFlags defaultFlags;
   std::set<const Base*> warned;  ///< components already warned about (once each)
   std::vector<PointField> fields;
 
@@ -90,12 +93,44 @@ SceneDrawer::~SceneDrawer() = default;
 DisplayFlags SceneDrawer::effectiveFlags() const {
   if (m_options.flags) return *m_options.flags;
   std::string unknown;
-  DisplayFlags flags = sceneDisplayFlags(m_root, unknown);
-  if (!unknown.empty())
-    for (const auto& object : m_root.objects())
-      if (object->className() == "VisualStyle")
-        m_impl->warnOnce(*object, "display flags not understood, ignored: " + unknown, "displayFlags");
-  return flags;
+  return sceneDisplayFlags(m_root, unknown);
+}
+
+DisplayFlags SceneDrawer::collectNodeFlags() {
+  m_impl->nodeFlags.clear();
+  DisplayFlags any;
+  any.visualModels = false;
+  std::vector<std::pair<const Node*, DisplayFlags>> stack{{&m_root, DisplayFlags{}}};
+  while (!stack.empty()) {
+    auto [node, flags] = stack.back();
+    stack.pop_back();
+    if (!node->d_activated.value()) continue;
+    if (m_options.flags) {
+      flags = *m_options.flags;
+    } else {
+      for (const auto& object : node->objects())
+        if (object->className() == "VisualStyle") {
+          std::string unknown;
+          flags.apply(readText(*object, "displayFlags"), unknown);
+          if (!unknown.empty())
+            m_impl->warnOnce(*object, "display flags not understood, ignored: " + unknown,
+                             "displayFlags");
+        }
+    }
+    m_impl->nodeFlags[node] = flags;
+    any.visualModels |= flags.visualModels;
+    any.behaviorModels |= flags.behaviorModels;
+    any.forceFields |= flags.forceFields;
+    any.collisionModels |= flags.collisionModels;
+    any.wireframe |= flags.wireframe;
+    for (const auto& child : node->children()) stack.emplace_back(child.get(), flags);
+  }
+  return any;
+}
+
+const DisplayFlags& SceneDrawer::flagsAt(const Node* node) const {
+  auto it = m_impl->nodeFlags.find(node);
+  return it == m_impl->nodeFlags.end() ? m_impl->defaultFlags : it->second;
 }
 
 Vec4d SceneDrawer::backgroundColor() const {
@@ -120,7 +155,7 @@ void SceneDrawer::releaseGLResources() { m_impl->textures.release(); }
 void SceneDrawer::draw(const Camera& camera, int width, int height) {
   m_report = {};
   updateVisuals();
-  const DisplayFlags flags = effectiveFlags();
+  const DisplayFlags any = collectNodeFlags();
   const Vec4d background = backgroundColor();
   const double aspect = height > 0 ? static_cast<double>(width) / height : 1.0;
 
@@ -151,13 +186,13 @@ void SceneDrawer::draw(const Camera& camera, int width, int height) {
       fieldRange(m_impl->fields, m_report.colorMin, m_report.colorMax);
       for (const PointField& f : m_impl->fields)
         if (f.state && f.state->node()) coloredNodes.insert(f.state->node());
-      drawColoredBodies(flags);
+      drawColoredBodies();
     }
   }
-  if (flags.visualModels) drawVisualModels(flags, coloredNodes);
-  if (flags.forceFields) drawElementMeshes(flags, coloredNodes);
-  if (flags.behaviorModels) drawStates();
-  if (flags.collisionModels) drawCollisionModels(flags);
+  if (any.visualModels) drawVisualModels(coloredNodes);
+  if (any.forceFields) drawElementMeshes(coloredNodes);
+  if (any.behaviorModels) drawStates();
+  if (any.collisionModels) drawCollisionModels();
 
   if (m_report.colorMapped && m_options.legend) {
     const LegendPlacement placed =
@@ -177,7 +212,7 @@ void SceneDrawer::draw(const Camera& camera, int width, int height) {
   glLoadMatrixd(camera.viewMatrix().data());
 }
 
-void SceneDrawer::drawColoredBodies(const DisplayFlags& flags) {
+void SceneDrawer::drawColoredBodies() {
   const double range = m_report.colorMax - m_report.colorMin;
   glEnable(GL_COLOR_MATERIAL);
   glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
@@ -190,6 +225,7 @@ void SceneDrawer::drawColoredBodies(const DisplayFlags& flags) {
     std::vector<Vec3d> colors(x.size());
     for (std::size_t i = 0; i < x.size(); ++i)
       colors[i] = rampColor(range > 0 ? (field.values[i] - m_report.colorMin) / range : 0.5);
+    const DisplayFlags& flags = flagsAt(state->node());
     const Topology* topology = state->node() ? state->node()->get<Topology>() : nullptr;
     const std::vector<Vec3i> faces = topology ? elementSurface(*topology) : std::vector<Vec3i>{};
     if (faces.empty()) {
@@ -217,10 +253,12 @@ void SceneDrawer::drawColoredBodies(const DisplayFlags& flags) {
   glDisable(GL_COLOR_MATERIAL);
 }
 
-void SceneDrawer::drawVisualModels(const DisplayFlags& flags, const std::set<const Node*>& skipped) {
+void SceneDrawer::drawVisualModels(const std::set<const Node*>& skipped) {
   forEachObject(m_root, [&](Base& object) {
     const auto* visual = dynamic_cast<const VisualModel*>(&object);
     if (!visual || underAny(object.node(), skipped)) return;
+    const DisplayFlags& flags = flagsAt(object.node());
+    if (!flags.visualModels) return;
     const VisualSurface* surface = visual->surface();
     if (!surface || surface->triangles.empty()) return;
     ++m_report.visualSurfaces;
@@ -265,7 +303,7 @@ void SceneDrawer::drawVisualModels(const DisplayFlags& flags, const std::set<con
   });
 }
 
-void SceneDrawer::drawElementMeshes(const DisplayFlags& flags, const std::set<const Node*>& skipped) {
+void SceneDrawer::drawElementMeshes(const std::set<const Node*>& skipped) {
   // One mesh per node that has a force field, a 3D state and a topology with elements.
   std::vector<const Node*> nodes;
   std::vector<const Node*> stack{&m_root};
@@ -278,7 +316,8 @@ void SceneDrawer::drawElementMeshes(const DisplayFlags& flags, const std::set<co
   }
   setColorMaterial(kElementColor);
   for (const Node* node : nodes) {
-    if (skipped.count(node) || !node->get<BaseForceField>()) continue;
+    const DisplayFlags& flags = flagsAt(node);
+    if (!flags.forceFields || skipped.count(node) || !node->get<BaseForceField>()) continue;
     const auto* state = node->get<MechanicalState<Vec3Types>>();
     const Topology* topology = node->get<Topology>();
     if (!state || !topology) continue;
@@ -297,6 +336,7 @@ void SceneDrawer::drawElementMeshes(const DisplayFlags& flags, const std::set<co
 void SceneDrawer::drawStates() {
   glDisable(GL_LIGHTING);
   forEachObject(m_root, [&](Base& object) {
+    if (!flagsAt(object.node()).behaviorModels) return;
     if (const auto* state = dynamic_cast<const BaseState*>(&object)) {
       glColor4d(kStateColor[0], kStateColor[1], kStateColor[2], 1.0);
       m_report.points += drawPoints(statePoints(*state), 3.0);
@@ -326,11 +366,13 @@ void SceneDrawer::drawStates() {
   glEnable(GL_LIGHTING);
 }
 
-void SceneDrawer::drawCollisionModels(const DisplayFlags& flags) {
+void SceneDrawer::drawCollisionModels() {
   const auto* phase = m_root.get<CollisionPhase>();
   forEachObject(m_root, [&](Base& object) {
     auto* model = dynamic_cast<CollisionModel*>(&object);
     if (!model || !model->d_active.value()) return;
+    const DisplayFlags& flags = flagsAt(object.node());
+    if (!flags.collisionModels) return;
     // With a pipeline the geometry is that of the last detection (the contacts drawn match
     // it); without one nothing updates it, so do it here.
     if (!phase) model->updateGeometry();
@@ -386,7 +428,7 @@ void SceneDrawer::drawCollisionModels(const DisplayFlags& flags) {
         break;
     }
   });
-  if (!phase) return;
+  if (!phase || !flagsAt(&m_root).collisionModels) return;
   glDisable(GL_LIGHTING);
   glDisable(GL_DEPTH_TEST);  // contacts are inside the surfaces they join: show them anyway
   glColor4d(kContactColor[0], kContactColor[1], kContactColor[2], 1.0);

@@ -38,7 +38,7 @@ TEST(DisplayFlags, ReadsSofasWordsInOrder) {
   EXPECT_EQ(unknown, "showNothingKnown frobnicate");
 }
 
-TEST(DisplayFlags, TheNearestVisualStyleUpwardsDecides) {
+TEST(DisplayFlags, StylesNestFromTheRootDown) {
   Runtime runtime;
   Scene scene(runtime);
   ASSERT_TRUE(scene.loadString(R"(<Node name="root">
@@ -51,9 +51,11 @@ TEST(DisplayFlags, TheNearestVisualStyleUpwardsDecides) {
   EXPECT_TRUE(atA.behaviorModels);
   EXPECT_FALSE(atA.visualModels);
   const DisplayFlags atB = sceneDisplayFlags(*a.findChild("B"), unknown);
-  EXPECT_TRUE(atB.forceFields);
-  EXPECT_TRUE(atB.visualModels) << "B's own style starts from SOFA's defaults";
-  EXPECT_FALSE(atB.behaviorModels);
+  EXPECT_TRUE(atB.forceFields) << "B's style adds force fields";
+  EXPECT_TRUE(atB.behaviorModels) << "and keeps what the root's says";
+  EXPECT_FALSE(atB.visualModels);
+  EXPECT_FALSE(sceneDisplayFlags(scene.root(), unknown).forceFields);
+  EXPECT_TRUE(unknown.empty()) << unknown;
 }
 
 TEST(ColorMap, NamesAreCheckedWithTheKnownOnesListed) {

@@ -200,6 +200,22 @@ TEST(SceneDrawer, BehaviourModelsShowEveryPointAndTheFixedOnes) {
   EXPECT_GT(f.drawer->lastFrame().lines, 0u) << "wireframe: edges instead of faces";
 }
 
+TEST(SceneDrawer, AVisualStyleAppliesToItsSubtree) {
+  Fixture f;
+  std::string why;
+  ASSERT_TRUE(f.load(R"(<Node name="root">
+      <Node name="A"><VisualStyle displayFlags="showBehaviorModels"/>
+        <MechanicalObject position="0 0 0  1 0 0  0 1 0"/>
+        <Node name="Child"><MechanicalObject position="0 0 1"/></Node></Node>
+      <Node name="B"><MechanicalObject position="1 1 1  0 0 1"/></Node>
+    </Node>)", why)) << why;
+  f.draw();
+  EXPECT_EQ(f.drawer->lastFrame().points, 4u) << "A's 3 points and its child's, not B's";
+  // A viewer's override applies everywhere.
+  f.draw(showing("showBehaviorModels"));
+  EXPECT_EQ(f.drawer->lastFrame().points, 6u);
+}
+
 TEST(SceneDrawer, SceneLightsReplaceTheHeadlight) {
   // The beam's face towards the camera (+x) lit by a light going along -x (from the camera's
   // side) is bright; lit from behind it is dark.

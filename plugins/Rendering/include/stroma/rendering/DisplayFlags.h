@@ -30,8 +30,9 @@ struct DisplayFlags {
   bool anything() const { return visualModels || behaviorModels || forceFields || collisionModels; }
 };
 
-/// The flags of the VisualStyle in `node` or its nearest ancestor that has one (the default
-/// flags when none). `unknown` gets the words that were not understood.
+/// The flags that hold at `node`: SOFA's defaults changed by the words of every VisualStyle
+/// from the root down to `node`, in that order (a style in a child node changes what it names
+/// and inherits the rest). `unknown` gets the words that were not understood.
 DisplayFlags sceneDisplayFlags(const Node& node, std::string& unknown);
 
 }  // namespace stroma::rendering

@@ -63,8 +63,9 @@ class SceneDrawer {
   void setOptions(const DrawOptions& options) { m_options = options; }
   const DrawOptions& options() const { return m_options; }
 
-  /// The flags draw() uses: the options' when set, else the root's VisualStyle (SOFA's rule:
-  /// the style in the root, or the nearest ancestor of what is drawn).
+  /// The flags at the root: the options' when set, else the root's VisualStyle. draw() uses,
+  /// for each component, the flags at its node (sceneDisplayFlags: styles nest), or the
+  /// options' everywhere when set.
   DisplayFlags effectiveFlags() const;
 
   /// Background color (r g b a): the scene's BackgroundSetting color, else dark grey-blue.
@@ -87,11 +88,14 @@ class SceneDrawer {
   void releaseGLResources();
 
  private:
-  void drawColoredBodies(const DisplayFlags& flags);
-  void drawVisualModels(const DisplayFlags& flags, const std::set<const Node*>& skipped);
-  void drawElementMeshes(const DisplayFlags& flags, const std::set<const Node*>& skipped);
+  /// The flags at each active node, for this frame; their union.
+  DisplayFlags collectNodeFlags();
+  const DisplayFlags& flagsAt(const Node* node) const;
+  void drawColoredBodies();
+  void drawVisualModels(const std::set<const Node*>& skipped);
+  void drawElementMeshes(const std::set<const Node*>& skipped);
   void drawStates();
-  void drawCollisionModels(const DisplayFlags& flags);
+  void drawCollisionModels();
 
   struct Impl;
   Node& m_root;
