@@ -28,7 +28,7 @@ std::vector<ViewCase> viewCases() {
   return cases;
 }
 
-TEST(Camera, FitPutsEveryCornerOfTheBoxInView) {
+TEST(RenderingCamera, FitPutsEveryCornerOfTheBoxInView) {
   const Aabb box{Vec3d(-0.11, -0.05, -0.03), Vec3d(0.11, 0.06, 0.07)};
   for (const ViewCase& c : viewCases()) {
     Camera camera;
@@ -54,7 +54,7 @@ TEST(Camera, FitPutsEveryCornerOfTheBoxInView) {
   }
 }
 
-TEST(Camera, EmptyBoxGivesAUsableView) {
+TEST(RenderingCamera, EmptyBoxGivesAUsableView) {
   Camera camera;
   camera.fitBox(Aabb{}, 1.5);
   EXPECT_TRUE(camera.position().allFinite());
@@ -62,7 +62,7 @@ TEST(Camera, EmptyBoxGivesAUsableView) {
   EXPECT_LT(camera.zNear, camera.zFar);
 }
 
-TEST(Camera, UnprojectIsTheInverseOfProject) {
+TEST(RenderingCamera, UnprojectIsTheInverseOfProject) {
   for (const ViewCase& c : viewCases()) {
     Camera camera;
     camera.projection = c.projection;
@@ -81,7 +81,7 @@ TEST(Camera, UnprojectIsTheInverseOfProject) {
   }
 }
 
-TEST(Camera, OrbitTurnsAroundTheLookAtPoint) {
+TEST(RenderingCamera, OrbitTurnsAroundTheLookAtPoint) {
   Camera camera;
   camera.setEyeAndTarget(Vec3d(0, 0, 5), Vec3d(0, 0, 0));
   const Vec3d eye = camera.position(), right = camera.right(), up = camera.up();
@@ -96,7 +96,7 @@ TEST(Camera, OrbitTurnsAroundTheLookAtPoint) {
   EXPECT_NEAR((camera.position() - camera.lookAt).norm(), 5.0, 1e-12);
 }
 
-TEST(Camera, PanMovesTheViewByFractionsOfItsHeight) {
+TEST(RenderingCamera, PanMovesTheViewByFractionsOfItsHeight) {
   for (Projection projection : {Projection::perspective, Projection::orthographic}) {
     Camera camera;
     camera.projection = projection;
@@ -112,7 +112,7 @@ TEST(Camera, PanMovesTheViewByFractionsOfItsHeight) {
   }
 }
 
-TEST(Camera, ZoomScalesTheDistanceAndIgnoresNonsense) {
+TEST(RenderingCamera, ZoomScalesTheDistanceAndIgnoresNonsense) {
   Camera camera;
   camera.setEyeAndTarget(Vec3d(0, 0, 4), Vec3d::Zero());
   camera.zoom(0.5);
@@ -122,7 +122,7 @@ TEST(Camera, ZoomScalesTheDistanceAndIgnoresNonsense) {
   EXPECT_DOUBLE_EQ(camera.distance, 2.0);
 }
 
-TEST(Camera, EyeAndTargetAlongTheUpHintStillGiveAFrame) {
+TEST(RenderingCamera, EyeAndTargetAlongTheUpHintStillGiveAFrame) {
   Camera camera;
   ASSERT_TRUE(camera.setEyeAndTarget(Vec3d(0, 5, 0), Vec3d::Zero()));
   EXPECT_TRUE(camera.forward().isApprox(Vec3d(0, -1, 0)));
@@ -130,7 +130,7 @@ TEST(Camera, EyeAndTargetAlongTheUpHintStillGiveAFrame) {
   EXPECT_FALSE(camera.setEyeAndTarget(Vec3d(1, 1, 1), Vec3d(1, 1, 1)));
 }
 
-TEST(Camera, ParsesEyeAndTarget) {
+TEST(RenderingCamera, ParsesEyeAndTarget) {
   Vec3d eye, target;
   std::string error;
   ASSERT_TRUE(parseEyeAndTarget("0 0.1 1  0 0 -2e-1", eye, target, error)) << error;
@@ -149,7 +149,7 @@ bool loadScene(Scene& scene, const std::string& objects) {
                           "<MechanicalObject position=\"0 0 0  1 1 1\"/></Node>");
 }
 
-TEST(Camera, ReadsTheScenesInteractiveCameraByName) {
+TEST(RenderingCamera, ReadsTheScenesInteractiveCameraByName) {
   Runtime runtime;
   {
     Scene scene(runtime);

@@ -17,7 +17,7 @@
 namespace stroma::rendering {
 namespace {
 
-TEST(DisplayFlags, ReadsSofasWordsInOrder) {
+TEST(RenderingDisplayFlags, ReadsSofasWordsInOrder) {
   DisplayFlags flags;
   EXPECT_TRUE(flags.visualModels);
   EXPECT_FALSE(flags.behaviorModels || flags.forceFields || flags.collisionModels || flags.wireframe);
@@ -38,7 +38,7 @@ TEST(DisplayFlags, ReadsSofasWordsInOrder) {
   EXPECT_EQ(unknown, "showNothingKnown frobnicate");
 }
 
-TEST(DisplayFlags, StylesNestFromTheRootDown) {
+TEST(RenderingDisplayFlags, StylesNestFromTheRootDown) {
   Runtime runtime;
   Scene scene(runtime);
   ASSERT_TRUE(scene.loadString(R"(<Node name="root">
@@ -58,7 +58,7 @@ TEST(DisplayFlags, StylesNestFromTheRootDown) {
   EXPECT_TRUE(unknown.empty()) << unknown;
 }
 
-TEST(ColorMap, NamesAreCheckedWithTheKnownOnesListed) {
+TEST(RenderingColorMap, NamesAreCheckedWithTheKnownOnesListed) {
   ColorMapKind kind = ColorMapKind::none;
   std::string error;
   EXPECT_TRUE(parseColorMapKind("Displacement", kind, error));
@@ -70,7 +70,7 @@ TEST(ColorMap, NamesAreCheckedWithTheKnownOnesListed) {
   EXPECT_NE(error.find("displacement, vonmises"), std::string::npos) << error;
 }
 
-TEST(ColorMap, RampGoesFromDarkBlueToRedAndClamps) {
+TEST(RenderingColorMap, RampGoesFromDarkBlueToRedAndClamps) {
   EXPECT_TRUE(rampColor(0).isApprox(rampColor(-3)));
   EXPECT_TRUE(rampColor(1).isApprox(rampColor(7)));
   EXPECT_TRUE(rampColor(std::nan("")).isApprox(rampColor(0)));
@@ -80,7 +80,7 @@ TEST(ColorMap, RampGoesFromDarkBlueToRedAndClamps) {
   for (double t = 0; t < 1; t += 0.01) EXPECT_LT((rampColor(t + 0.01) - rampColor(t)).norm(), 0.06);
 }
 
-TEST(ColorMap, DisplacementIsTheDistanceFromTheRestPositions) {
+TEST(RenderingColorMap, DisplacementIsTheDistanceFromTheRestPositions) {
   Runtime runtime;
   Scene scene(runtime);
   ASSERT_TRUE(scene.loadString(R"(<Node name="root">
@@ -98,7 +98,7 @@ TEST(ColorMap, DisplacementIsTheDistanceFromTheRestPositions) {
   EXPECT_EQ(max, 2.0);
 }
 
-TEST(ColorMap, VonMisesWithoutAStressFieldSaysSo) {
+TEST(RenderingColorMap, VonMisesWithoutAStressFieldSaysSo) {
   Runtime runtime;
   Scene scene(runtime);
   ASSERT_TRUE(scene.loadString(R"(<Node name="root"><MechanicalObject position="0 0 0"/></Node>)"));
@@ -108,14 +108,14 @@ TEST(ColorMap, VonMisesWithoutAStressFieldSaysSo) {
   EXPECT_NE(error.find("provides stress"), std::string::npos) << error;
 }
 
-TEST(ColorMap, LegendNumbersHaveThreeSignificantDigits) {
+TEST(RenderingColorMap, LegendNumbersHaveThreeSignificantDigits) {
   EXPECT_EQ(legendNumber(0), "0");
   EXPECT_EQ(legendNumber(0.31234), "0.312");
   EXPECT_EQ(legendNumber(15234.0), "1.52e+04");
   EXPECT_EQ(legendNumber(-2.5e-7), "-2.5e-07");
 }
 
-TEST(BitmapFont, HasADistinctGlyphForEveryCharacterANumberOrLabelNeeds) {
+TEST(RenderingBitmapFont, HasADistinctGlyphForEveryCharacterANumberOrLabelNeeds) {
   const std::string needed = "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZe .,-+:/=%()_";
   std::set<std::array<std::uint8_t, kGlyphHeight>> seen;
   for (char c : needed) {
@@ -129,7 +129,7 @@ TEST(BitmapFont, HasADistinctGlyphForEveryCharacterANumberOrLabelNeeds) {
   EXPECT_EQ(textWidth("", 3), 0);
 }
 
-TEST(PngImage, WritesAndReadsBackTheSamePixels) {
+TEST(RenderingPngImage, WritesAndReadsBackTheSamePixels) {
   test::TempDir dir;
   Image image;
   image.width = 7;
@@ -147,7 +147,7 @@ TEST(PngImage, WritesAndReadsBackTheSamePixels) {
   EXPECT_TRUE(std::equal(flipped.rgba.begin(), flipped.rgba.begin() + 28, image.rgba.end() - 28));
 }
 
-TEST(PngImage, CorruptOrMissingFilesAreRefusedWithAReason) {
+TEST(RenderingPngImage, CorruptOrMissingFilesAreRefusedWithAReason) {
   test::TempDir dir;
   Image image;
   std::string error;

@@ -87,7 +87,7 @@ double meanBrightness(const Image& image) {
   return sum / (3.0 * image.rgba.size() / 4);
 }
 
-TEST(SceneDrawer, ADeformedBodyRendersDifferentlyFromItsRestShape) {
+TEST(RenderingSceneDrawer, ADeformedBodyRendersDifferentlyFromItsRestShape) {
   Fixture f;
   std::string why;
   ASSERT_TRUE(f.load(beamScene(""), why)) << why;
@@ -103,7 +103,7 @@ TEST(SceneDrawer, ADeformedBodyRendersDifferentlyFromItsRestShape) {
       << "at least 5 % of the pixels change when the beam bends";
 }
 
-TEST(SceneDrawer, LegendWritesTheRangeOfTheDisplacementItColors) {
+TEST(RenderingSceneDrawer, LegendWritesTheRangeOfTheDisplacementItColors) {
   Fixture f;
   std::string why;
   ASSERT_TRUE(f.load(beamScene(""), why)) << why;
@@ -140,7 +140,7 @@ TEST(SceneDrawer, LegendWritesTheRangeOfTheDisplacementItColors) {
   EXPECT_EQ(std::stod(shownMin), 0.0);
 }
 
-TEST(SceneDrawer, VonMisesColorsNeedAForceFieldThatGivesStress) {
+TEST(RenderingSceneDrawer, VonMisesColorsNeedAForceFieldThatGivesStress) {
   Fixture f;
   std::string why;
   ASSERT_TRUE(f.load(R"(<Node name="root" dt="0.02" gravity="0 -9.81 0">
@@ -167,7 +167,7 @@ TEST(SceneDrawer, VonMisesColorsNeedAForceFieldThatGivesStress) {
   EXPECT_GT(report.colorMax, report.colorMin) << "a bent beam is stressed unevenly";
 }
 
-TEST(SceneDrawer, ASceneWithNothingToShowDrawsNothingButTheBackground) {
+TEST(RenderingSceneDrawer, ASceneWithNothingToShowDrawsNothingButTheBackground) {
   Fixture f;
   std::string why;
   ASSERT_TRUE(f.load(R"(<Node name="root"><BackgroundSetting color="0 0.5 1"/>
@@ -187,7 +187,7 @@ TEST(SceneDrawer, ASceneWithNothingToShowDrawsNothingButTheBackground) {
   EXPECT_EQ(f.drawer->lastFrame().triangles, 0u);
 }
 
-TEST(SceneDrawer, BehaviourModelsShowEveryPointAndTheFixedOnes) {
+TEST(RenderingSceneDrawer, BehaviourModelsShowEveryPointAndTheFixedOnes) {
   Fixture f;
   std::string why;
   ASSERT_TRUE(f.load(beamScene(R"(<VisualStyle displayFlags="showBehaviorModels"/>)"), why)) << why;
@@ -200,7 +200,7 @@ TEST(SceneDrawer, BehaviourModelsShowEveryPointAndTheFixedOnes) {
   EXPECT_GT(f.drawer->lastFrame().lines, 0u) << "wireframe: edges instead of faces";
 }
 
-TEST(SceneDrawer, AVisualStyleAppliesToItsSubtree) {
+TEST(RenderingSceneDrawer, AVisualStyleAppliesToItsSubtree) {
   Fixture f;
   std::string why;
   ASSERT_TRUE(f.load(R"(<Node name="root">
@@ -216,7 +216,7 @@ TEST(SceneDrawer, AVisualStyleAppliesToItsSubtree) {
   EXPECT_EQ(f.drawer->lastFrame().points, 6u);
 }
 
-TEST(SceneDrawer, SceneLightsReplaceTheHeadlight) {
+TEST(RenderingSceneDrawer, SceneLightsReplaceTheHeadlight) {
   // The beam's face towards the camera (+x) lit by a light going along -x (from the camera's
   // side) is bright; lit from behind it is dark.
   auto brightness = [](const char* direction) {
@@ -251,7 +251,7 @@ Image twoColorTexture() {
   return image;
 }
 
-TEST(SceneDrawer, TexturesAreDrawnAndBadOnesWarnedOnceThenLeftOut) {
+TEST(RenderingSceneDrawer, TexturesAreDrawnAndBadOnesWarnedOnceThenLeftOut) {
   test::TempDir dir;
   std::string error;
   ASSERT_TRUE(writePng(dir.path() / "halves.png", twoColorTexture(), error)) << error;
@@ -293,7 +293,7 @@ TEST(SceneDrawer, TexturesAreDrawnAndBadOnesWarnedOnceThenLeftOut) {
   }
 }
 
-TEST(SceneDrawer, CollisionModelsAndContactsOfAScene) {
+TEST(RenderingSceneDrawer, CollisionModelsAndContactsOfAScene) {
   Fixture f;
   std::string why;
   const std::string file = std::string(STROMA_SOURCE_DIR) + "/scenes/collision/TwoCubes.scn";
