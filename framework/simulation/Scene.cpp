@@ -8,6 +8,7 @@
 #include "simulation/AnimationLoop.h"
 #include "simulation/SceneLoader.h"
 #include "simulation/SceneXml.h"
+#include "simulation/StepListener.h"
 #include "simulation/Visitor.h"
 
 namespace stroma {
@@ -38,6 +39,7 @@ void Scene::unload() {
     CleanupVisitor cleanup;
     traverse(*m_root, cleanup);
   }
+  m_stepListeners.clear();
   m_root.reset();
   m_loaded = false;
   m_steps = 0;
@@ -77,6 +79,7 @@ bool Scene::load(std::string_view xml, const fs::path& file) {
   const bool built = buildSceneGraph(m_runtime, root, file, m_log, m_root, m_pool.get());
   if (m_root) m_root->setMessageLog(&m_log);
   m_loaded = built && m_log.errorCount() == errorsBefore;
+  if (m_loaded) collectStepListeners(*m_root, m_stepListeners);
   return m_loaded;
 }
 
@@ -86,8 +89,14 @@ bool Scene::step(double dt) {
   const std::size_t errorsBefore = m_log.errorCount();
   {
     ScopedPhase phase(m_timing, "step");
+    for (StepListener* listener : m_stepListeners) listener->stepBegin(m_root->time(), dt);
     if (AnimationLoop* loop = m_root->get<AnimationLoop>()) loop->step(*m_root, dt, m_timing);
     else animateDefault(*m_root, dt, m_timing);
+  }
+  // Outside the step's timing: what listeners write (exports) is not simulation time.
+  if (!m_stepListeners.empty()) {
+    ScopedPhase phase(m_timing, "stepListeners");
+    for (StepListener* listener : m_stepListeners) listener->stepEnd(m_root->time(), dt);
   }
   ++m_steps;
   return m_log.errorCount() == errorsBefore;

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/Message.h"
 #include "core/Node.h"
@@ -14,6 +15,7 @@
 namespace stroma {
 
 class Runtime;
+class StepListener;
 
 /// One simulated scene: its graph, its messages and its timings. Scenes are independent of
 /// each other; several may live in one process and be stepped from different threads.
@@ -36,8 +38,9 @@ class Scene {
   /// The same from text; `fileName` is used in messages and to resolve relative paths.
   bool loadString(std::string_view xml, const std::filesystem::path& fileName = "<string>");
 
-  /// Advances by one step of `dt` (the root's dt when dt <= 0). Returns false when the step
-  /// reported an error (a diverging simulation), which the log details.
+  /// Advances by one step of `dt` (the root's dt when dt <= 0): the StepListeners' stepBegin,
+  /// the animation loop's step, then their stepEnd. Returns false when the step reported an
+  /// error (a diverging simulation, a listener that failed), which the log details.
   bool step(double dt = 0);
 
   Node& root() { return *m_root; }
@@ -66,6 +69,7 @@ class Scene {
   std::unique_ptr<Node> m_root;
   std::filesystem::path m_file;
   long long m_steps = 0;
+  std::vector<StepListener*> m_stepListeners;  ///< found once, after loading
   std::unique_ptr<ThreadPool> m_pool;
   bool m_loaded = false;
 };

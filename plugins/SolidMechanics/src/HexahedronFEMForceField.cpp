@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "HexahedronFEMForceField.h"
 
+#include "CorotationalStress.h"
 #include "core/Node.h"
 
 namespace stroma {
@@ -32,6 +33,20 @@ void HexahedronFEMForceField::addKToMatrix(const MechanicalParams& mp, MatrixAcc
 double HexahedronFEMForceField::potentialEnergy(const MechanicalParams&, const VecCoord& x) const {
   if (!m_model.ready()) return 0;
   return m_model.elements().energy(rotationMethod(), x);
+}
+
+bool HexahedronFEMForceField::vonMisesPerElement(std::vector<double>& stress) const {
+  if (!m_model.ready() || !mstate()) return false;
+  return computeVonMisesPerElement(m_model.elements(), rotationMethod(),
+                                   mstate()->readCoord(VecId::position()), d_youngModulus.value(),
+                                   d_poissonRatio.value(), stress);
+}
+
+bool HexahedronFEMForceField::vonMisesPerPoint(std::vector<double>& stress) const {
+  std::vector<double> perElement;
+  if (!vonMisesPerElement(perElement)) return false;
+  averageAroundPoints(m_model.elements(), perElement, mstate()->size(), stress);
+  return true;
 }
 
 }  // namespace stroma

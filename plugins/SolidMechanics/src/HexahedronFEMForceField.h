@@ -8,6 +8,7 @@
 #include "FemMethod.h"
 #include "VolumetricIntegration.h"
 #include "core/StateTypes.h"
+#include "simulation/StressField.h"
 #include "simulation/ForceField.h"
 #include "topology/Topology.h"
 
@@ -29,7 +30,7 @@ namespace stroma {
 ///
 /// Same rest-shape checks, run-time material changes and deterministic parallel loops as
 /// TetrahedronFEMForceField.
-class HexahedronFEMForceField final : public ForceField<Vec3Types> {
+class HexahedronFEMForceField final : public ForceField<Vec3Types>, public StressField {
  public:
   Data<std::vector<double>> d_youngModulus{
       this,
@@ -78,6 +79,11 @@ class HexahedronFEMForceField final : public ForceField<Vec3Types> {
   void addKToMatrix(const MechanicalParams& mp, MatrixAccumulator& matrix,
                     std::size_t offset) override;
   double potentialEnergy(const MechanicalParams& mp, const VecCoord& x) const override;
+
+  // StressField: the von Mises stress at the current positions, on demand (CorotationalStress.h).
+  const BaseMechanicalState* stressState() const override { return mstate(); }
+  bool vonMisesPerElement(std::vector<double>& stress) const override;
+  bool vonMisesPerPoint(std::vector<double>& stress) const override;
 
   /// The elements, their constants and the rotations of the last addForce (for tests).
   const CorotationalElements<fem::CorotationalHexahedron>& elements() const {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "HexahedronFEMForceFieldAndMass.h"
 
+#include "CorotationalStress.h"
 #include "core/Node.h"
 
 namespace stroma {
@@ -129,6 +130,20 @@ double HexahedronFEMForceFieldAndMass::kineticEnergy(const VecDeriv& v) const {
     }
   }
   return 0.5 * e;
+}
+
+bool HexahedronFEMForceFieldAndMass::vonMisesPerElement(std::vector<double>& stress) const {
+  if (!m_model.ready() || !mstate()) return false;
+  return computeVonMisesPerElement(m_model.elements(), rotationMethod(),
+                                   mstate()->readCoord(VecId::position()), d_youngModulus.value(),
+                                   d_poissonRatio.value(), stress);
+}
+
+bool HexahedronFEMForceFieldAndMass::vonMisesPerPoint(std::vector<double>& stress) const {
+  std::vector<double> perElement;
+  if (!vonMisesPerElement(perElement)) return false;
+  averageAroundPoints(m_model.elements(), perElement, mstate()->size(), stress);
+  return true;
 }
 
 }  // namespace stroma

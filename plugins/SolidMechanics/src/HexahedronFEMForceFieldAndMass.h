@@ -9,6 +9,7 @@
 #include "FemMethod.h"
 #include "SolidMechanics/kernels/TrilinearHexahedron.h"
 #include "core/StateTypes.h"
+#include "simulation/StressField.h"
 #include "simulation/Mass.h"
 #include "topology/Topology.h"
 
@@ -25,7 +26,7 @@ namespace stroma {
 /// Gravity (the node's g) is the force m_i g at each vertex with the lumped masses, which is
 /// exactly M (1 (x) g) for the consistent mass too. Explicit solvers need a diagonal mass:
 /// isDiagonal() is true only with lumpedMass.
-class HexahedronFEMForceFieldAndMass final : public Mass<Vec3Types> {
+class HexahedronFEMForceFieldAndMass final : public Mass<Vec3Types>, public StressField {
  public:
   Data<std::vector<double>> d_youngModulus{
       this,
@@ -77,6 +78,11 @@ class HexahedronFEMForceFieldAndMass final : public Mass<Vec3Types> {
   void addMToMatrix(MatrixAccumulator& matrix, std::size_t offset, double factor) override;
   double kineticEnergy(const VecDeriv& v) const override;
   bool isDiagonal() const override { return d_lumpedMass.value(); }
+
+  // StressField: the von Mises stress at the current positions, on demand (CorotationalStress.h).
+  const BaseMechanicalState* stressState() const override { return mstate(); }
+  bool vonMisesPerElement(std::vector<double>& stress) const override;
+  bool vonMisesPerPoint(std::vector<double>& stress) const override;
 
   /// Lumped mass of each vertex (kg).
   const std::vector<double>& vertexMasses() const { return m_vertexMasses; }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "TetrahedronFEMForceField.h"
 
+#include "CorotationalStress.h"
 #include "FemMaterial.h"
 #include "core/Node.h"
 
@@ -67,6 +68,20 @@ double TetrahedronFEMForceField::potentialEnergy(const MechanicalParams&, const 
   double energy = m_model.elements().energy(rotationMethod(), x);
   if (usesNodalPressure()) energy += m_pressure.energy(m_model.elements(), rotationMethod(), x);
   return energy;
+}
+
+bool TetrahedronFEMForceField::vonMisesPerElement(std::vector<double>& stress) const {
+  if (!m_model.ready() || !mstate()) return false;
+  return computeVonMisesPerElement(m_model.elements(), rotationMethod(),
+                                   mstate()->readCoord(VecId::position()), d_youngModulus.value(),
+                                   d_poissonRatio.value(), stress);
+}
+
+bool TetrahedronFEMForceField::vonMisesPerPoint(std::vector<double>& stress) const {
+  std::vector<double> perElement;
+  if (!vonMisesPerElement(perElement)) return false;
+  averageAroundPoints(m_model.elements(), perElement, mstate()->size(), stress);
+  return true;
 }
 
 }  // namespace stroma

@@ -11,6 +11,7 @@
 #include "FemMethod.h"
 #include "VolumetricIntegration.h"
 #include "core/StateTypes.h"
+#include "simulation/StressField.h"
 #include "simulation/ForceField.h"
 #include "topology/Topology.h"
 
@@ -37,7 +38,7 @@ namespace stroma {
 ///
 /// Elements are computed in parallel on the scene's threads, each writing its own results,
 /// then summed per vertex in a fixed order: results do not depend on the thread count.
-class TetrahedronFEMForceField final : public ForceField<Vec3Types> {
+class TetrahedronFEMForceField final : public ForceField<Vec3Types>, public StressField {
  public:
   Data<std::vector<double>> d_youngModulus{
       this,
@@ -107,8 +108,9 @@ class TetrahedronFEMForceField final : public ForceField<Vec3Types> {
       this,
       "computeVonMisesStress",
       0,
-      "Output only (SOFA's von Mises stress for viewers: 0 none, 1 from the corotational "
-      "strain, 2 from the Green strain); accepted, not computed by this component.",
+      "SOFA's switch of its von Mises output (0 none, 1 from the corotational strain, 2 from "
+      "the Green strain); accepted: Stroma computes the stress on demand only (exports, "
+      "pictures), from the corotational strain, whatever this says.",
       {.min = 0.0, .max = 2.0}};
   Data<bool> d_showVonMisesStressPerElement{this, "showVonMisesStressPerElement", false,
                                             "Viewers only."};
@@ -141,6 +143,11 @@ class TetrahedronFEMForceField final : public ForceField<Vec3Types> {
   void addKToMatrix(const MechanicalParams& mp, MatrixAccumulator& matrix,
                     std::size_t offset) override;
   double potentialEnergy(const MechanicalParams& mp, const VecCoord& x) const override;
+
+  // StressField: the von Mises stress at the current positions, on demand (CorotationalStress.h).
+  const BaseMechanicalState* stressState() const override { return mstate(); }
+  bool vonMisesPerElement(std::vector<double>& stress) const override;
+  bool vonMisesPerPoint(std::vector<double>& stress) const override;
 
   /// The elements, their constants and the rotations of the last addForce (for tests).
   const CorotationalElements<fem::CorotationalTetrahedron>& elements() const {
