@@ -37,10 +37,11 @@ int moduleCommand(const std::string& command, const std::string& module, const s
     }
   }
   if (found.empty()) {
-    std::cerr << "stroma: `stroma " << command << "` is not available in this build: "
-              << (unavailable.empty() ? library + " was not found in the plugin folders (build it: "
-                                                  "ninja " + module + ")"
-                                      : unavailable)
+    const std::string why =
+        !unavailable.empty()
+            ? unavailable
+            : library + " was not found in the plugin folders (build it: ninja " + module + ")";
+    std::cerr << "stroma: `stroma " << command << "` is not available in this build: " << why
               << "\n";
     return kBadInput;
   }

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "FrameSink.h"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace stroma::rendering {
 
@@ -31,7 +32,8 @@ fs::path findOnPath(const std::string& name) {
   while (std::getline(dirs, dir, ':')) {
     const fs::path candidate = fs::path(dir.empty() ? "." : dir) / name;
     std::error_code ec;
-    if (fs::is_regular_file(candidate, ec) && ::access(candidate.c_str(), X_OK) == 0) return candidate;
+    if (fs::is_regular_file(candidate, ec) && ::access(candidate.c_str(), X_OK) == 0)
+      return candidate;
   }
   return {};
 }
@@ -79,8 +81,10 @@ bool VideoPipe::open(const fs::path& ffmpeg, const fs::path& file, int width, in
   // yuv420p (what players expect) needs even sides: the scale filter rounds them down.
   const std::string command = shellQuoted(ffmpeg.string()) +
                               " -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgb24 -s " +
-                              size + " -framerate 25 -i - -vf 'scale=trunc(iw/2)*2:trunc(ih/2)*2' "
-                              "-c:v libx264 -pix_fmt yuv420p " + shellQuoted(file.string());
+                              size +
+                              " -framerate 25 -i - -vf 'scale=trunc(iw/2)*2:trunc(ih/2)*2' "
+                              "-c:v libx264 -pix_fmt yuv420p " +
+                              shellQuoted(file.string());
   m_pipe = popen(command.c_str(), "w");
   if (!m_pipe) {
     error = "cannot start " + ffmpeg.string();

@@ -12,8 +12,8 @@
 #include "FrameSink.h"
 #include "OffscreenContext.h"
 #include "RenderOptions.h"
-#include "core/Runtime.h"
 #include "core/Node.h"
+#include "core/Runtime.h"
 #include "simulation/Scene.h"
 #include "stroma/rendering/Camera.h"
 #include "stroma/rendering/SceneBounds.h"
@@ -60,7 +60,11 @@ class FrameWriter {
  public:
   FrameWriter(const RenderOptions& options, OffscreenContext& context, SceneDrawer& drawer,
               Camera& camera, Scene& scene, VideoPipe* video)
-      : m_o(options), m_context(context), m_drawer(drawer), m_camera(camera), m_scene(scene),
+      : m_o(options),
+        m_context(context),
+        m_drawer(drawer),
+        m_camera(camera),
+        m_scene(scene),
         m_video(video) {}
 
   bool write(long long step) {
@@ -135,8 +139,9 @@ int renderCommand(const std::vector<std::string>& args) {
   if (!o.video.empty()) {
     ffmpeg = findOnPath("ffmpeg");
     if (ffmpeg.empty())
-      return cli::usageError("--video: ffmpeg not found: install Debian's ffmpeg (apt-get install "
-                             "ffmpeg), or leave out --video and make the video from the PNG frames");
+      return cli::usageError(
+          "--video: ffmpeg not found: install Debian's ffmpeg (apt-get install "
+          "ffmpeg), or leave out --video and make the video from the PNG frames");
   }
   if ((o.outputDirGiven || o.video.empty()) && !prepareOutputFolder(o.outputDir, error))
     return cli::usageError(error);
@@ -234,7 +239,8 @@ int renderCommand(const std::vector<std::string>& args) {
       frames.write(step);
       break;
     }
-    if ((step % every == 0 || step == o.steps) && !frames.write(step)) code = cli::kSimulationFailure;
+    if ((step % every == 0 || step == o.steps) && !frames.write(step))
+      code = cli::kSimulationFailure;
   }
   if (video && !video->close(error)) {
     std::cerr << "stroma: --video " << o.video << ": " << error << "\n";
@@ -242,13 +248,13 @@ int renderCommand(const std::vector<std::string>& args) {
   }
   drawer.releaseGLResources();
   const double total = secondsSince(start);
-  std::printf("Rendered %lld frames of %dx%d with %s in %.3f s (%.1f frames/s): drawing %.3f s "
-              "(%.1f frames/s), writing %.3f s, stepping %.3f s\n",
-              frames.frames(), o.width, o.height, context.renderer().c_str(), total,
-              total > 0 ? static_cast<double>(frames.frames()) / total : 0.0,
-              frames.drawSeconds,
-              frames.drawSeconds > 0 ? static_cast<double>(frames.frames()) / frames.drawSeconds : 0.0,
-              frames.saveSeconds, stepSeconds);
+  std::printf(
+      "Rendered %lld frames of %dx%d with %s in %.3f s (%.1f frames/s): drawing %.3f s "
+      "(%.1f frames/s), writing %.3f s, stepping %.3f s\n",
+      frames.frames(), o.width, o.height, context.renderer().c_str(), total,
+      total > 0 ? static_cast<double>(frames.frames()) / total : 0.0, frames.drawSeconds,
+      frames.drawSeconds > 0 ? static_cast<double>(frames.frames()) / frames.drawSeconds : 0.0,
+      frames.saveSeconds, stepSeconds);
   if (video && code == cli::kSuccess) std::printf("Video: %s\n", o.video.c_str());
   return code;
 }
@@ -259,7 +265,7 @@ int renderCommand(const std::vector<std::string>& args) {
 
 /// The entry point `stroma render` resolves with dlsym: the arguments after "render".
 extern "C" __attribute__((visibility("default"))) int stroma_render_main(int argc,
-                                                                      const char* const* argv) {
+                                                                         const char* const* argv) {
   try {
     return stroma::rendering::renderCommand(std::vector<std::string>(argv, argv + argc));
   } catch (const std::exception& e) {

@@ -9,8 +9,8 @@ namespace stroma::rendering {
 
 const std::vector<std::string>& renderValueOptions() {
   static const std::vector<std::string> options = {
-      "-n",      "--steps",     "--every", "--out",   "--size",      "--camera",
-      "--color-map", "--video", "--dt",    "--threads", "--data-path", "--log-json", "--show"};
+      "-n",      "--steps", "--every",   "--out",       "--size",     "--camera", "--color-map",
+      "--video", "--dt",    "--threads", "--data-path", "--log-json", "--show"};
   return options;
 }
 

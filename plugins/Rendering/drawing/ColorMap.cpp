@@ -17,7 +17,8 @@ namespace stroma::rendering {
 bool parseColorMapKind(std::string_view name, ColorMapKind& kind, std::string& error) {
   std::string lower;
   for (char c : name)
-    if (c != '-' && c != '_') lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (c != '-' && c != '_')
+      lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (lower == "displacement") {
     kind = ColorMapKind::displacement;
     return true;
@@ -32,9 +33,12 @@ bool parseColorMapKind(std::string_view name, ColorMapKind& kind, std::string& e
 
 const char* colorMapName(ColorMapKind kind) {
   switch (kind) {
-    case ColorMapKind::displacement: return "displacement";
-    case ColorMapKind::vonMises: return "von Mises stress";
-    case ColorMapKind::none: break;
+    case ColorMapKind::displacement:
+      return "displacement";
+    case ColorMapKind::vonMises:
+      return "von Mises stress";
+    case ColorMapKind::none:
+      break;
   }
   return "none";
 }
@@ -57,7 +61,8 @@ bool computePointFields(const Node& root, ColorMapKind kind, std::vector<PointFi
       for (std::size_t i = 0; i < x.size(); ++i) field.values[i] = (x[i] - rest[i]).norm();
       fields.push_back(std::move(field));
     });
-    if (fields.empty()) error = "no 3D mechanical state with rest positions to measure a displacement from";
+    if (fields.empty())
+      error = "no 3D mechanical state with rest positions to measure a displacement from";
   } else if (kind == ColorMapKind::vonMises) {
     bool anyStressField = false;
     forEachObject(root, [&](Base& object) {

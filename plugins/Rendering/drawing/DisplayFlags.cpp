@@ -12,10 +12,17 @@ namespace stroma::rendering {
 namespace {
 
 /// SOFA's display words this drawer has nothing to draw for: accepted silently.
-constexpr const char* kAcceptedWithoutEffect[] = {
-    "Mappings",       "MechanicalMappings", "InteractionForceFields", "BoundingCollisionModels",
-    "Normals",        "Options",            "Advanced",               "RendererAdvanced",
-    "Rendering",      "BoundingTree",       "ProcessorColor"};
+constexpr const char* kAcceptedWithoutEffect[] = {"Mappings",
+                                                  "MechanicalMappings",
+                                                  "InteractionForceFields",
+                                                  "BoundingCollisionModels",
+                                                  "Normals",
+                                                  "Options",
+                                                  "Advanced",
+                                                  "RendererAdvanced",
+                                                  "Rendering",
+                                                  "BoundingTree",
+                                                  "ProcessorColor"};
 
 }  // namespace
 
@@ -65,7 +72,8 @@ DisplayFlags sceneDisplayFlags(const Node& node, std::string& unknown) {
   DisplayFlags flags;
   for (auto it = path.rbegin(); it != path.rend(); ++it)
     for (const auto& object : (*it)->objects())
-      if (object->className() == "VisualStyle") flags.apply(readText(*object, "displayFlags"), unknown);
+      if (object->className() == "VisualStyle")
+        flags.apply(readText(*object, "displayFlags"), unknown);
   return flags;
 }
 

@@ -23,7 +23,8 @@ void setColor4(GLenum which, const Vec4d& c) {
 
 }  // namespace
 
-std::vector<Vec3d> vertexNormals(std::span<const Vec3d> positions, std::span<const Vec3i> triangles) {
+std::vector<Vec3d> vertexNormals(std::span<const Vec3d> positions,
+                                 std::span<const Vec3i> triangles) {
   std::vector<Vec3d> normals(positions.size(), Vec3d::Zero());
   for (const Vec3i& t : triangles) {
     if (!inRange(t, positions.size())) continue;
@@ -102,7 +103,8 @@ void drawSphere(const Vec3d& center, double radius) {
     for (int k = 0; k <= kSlices; ++k) {
       const double phi = 2 * kPi * k / kSlices;
       for (double theta : {t0, t1}) {
-        const Vec3d n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+        const Vec3d n(std::sin(theta) * std::cos(phi), std::cos(theta),
+                      std::sin(theta) * std::sin(phi));
         const Vec3d p = center + radius * n;
         glNormal3d(n[0], n[1], n[2]);
         glVertex3d(p[0], p[1], p[2]);
@@ -135,7 +137,8 @@ void setMaterial(const Vec4d& ambient, const Vec4d& diffuse, const Vec4d& specul
   setColor4(GL_DIFFUSE, diffuse);
   setColor4(GL_SPECULAR, specular);
   setColor4(GL_EMISSION, emissive);
-  glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, static_cast<GLfloat>(std::clamp(shininess, 0.0, 128.0)));
+  glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS,
+              static_cast<GLfloat>(std::clamp(shininess, 0.0, 128.0)));
   glColor4d(diffuse[0], diffuse[1], diffuse[2], diffuse[3]);
 }
 

@@ -13,7 +13,8 @@ namespace stroma::rendering {
 /// Per-vertex normals: the sum of the normals of the triangles around each vertex, weighted by
 /// their areas, normalized (zero for a vertex in no triangle). Triangles with an index out of
 /// range are skipped.
-std::vector<Vec3d> vertexNormals(std::span<const Vec3d> positions, std::span<const Vec3i> triangles);
+std::vector<Vec3d> vertexNormals(std::span<const Vec3d> positions,
+                                 std::span<const Vec3i> triangles);
 
 /// A triangle mesh with what it has: normals (one per position), per-vertex colors or texture
 /// coordinates (empty when none). Returns the number of triangles drawn (indices out of range

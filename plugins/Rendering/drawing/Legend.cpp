@@ -59,7 +59,8 @@ LegendPlacement drawLegend(ColorMapKind kind, double min, double max, int width,
   glMatrixMode(GL_MODELVIEW);
   glPushMatrix();
   glLoadIdentity();
-  fillRect(panelLeft, titleY - gap, width - margin + gap, barBottom + gap, Vec4d(0.08, 0.08, 0.1, 1));
+  fillRect(panelLeft, titleY - gap, width - margin + gap, barBottom + gap,
+           Vec4d(0.08, 0.08, 0.1, 1));
   // The bar, min at the bottom, in strips whose ends take the ramp's colors.
   constexpr int kStrips = 32;
   glShadeModel(GL_SMOOTH);

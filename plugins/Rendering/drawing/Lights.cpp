@@ -41,7 +41,8 @@ int setupLights(const Node& root) {
   const Base* manager = nullptr;
   forEachObject(root, [&](Base& object) {
     const std::string& c = object.className();
-    if (c == "DirectionalLight" || c == "PositionalLight" || c == "SpotLight") lights.push_back(&object);
+    if (c == "DirectionalLight" || c == "PositionalLight" || c == "SpotLight")
+      lights.push_back(&object);
     if (c == "LightManager" && !manager) manager = &object;
   });
   GLint maxLights = 8;
@@ -99,11 +100,14 @@ int setupLights(const Node& root) {
       glLightf(id, GL_LINEAR_ATTENUATION,
                static_cast<GLfloat>(std::max(0.0, number(*light, "attenuation", 0.0))));
       if (kind == "SpotLight") {
-        const GLfloat d[3] = {static_cast<GLfloat>(direction[0]), static_cast<GLfloat>(direction[1]),
+        const GLfloat d[3] = {static_cast<GLfloat>(direction[0]),
+                              static_cast<GLfloat>(direction[1]),
                               static_cast<GLfloat>(direction[2])};
         glLightfv(id, GL_SPOT_DIRECTION, d);
-        glLightf(id, GL_SPOT_CUTOFF, static_cast<GLfloat>(std::clamp(number(*light, "cutoff", 30.0), 0.0, 90.0)));
-        glLightf(id, GL_SPOT_EXPONENT, static_cast<GLfloat>(std::clamp(number(*light, "exponent", 20.0), 0.0, 128.0)));
+        glLightf(id, GL_SPOT_CUTOFF,
+                 static_cast<GLfloat>(std::clamp(number(*light, "cutoff", 30.0), 0.0, 90.0)));
+        glLightf(id, GL_SPOT_EXPONENT,
+                 static_cast<GLfloat>(std::clamp(number(*light, "exponent", 20.0), 0.0, 128.0)));
       } else {
         glLightf(id, GL_SPOT_CUTOFF, 180.0f);
       }

@@ -138,8 +138,11 @@ Vec4d SceneDrawer::backgroundColor() const {
   if (const Base* background = findByClass(m_root, "BackgroundSetting")) {
     const std::string text = readText(*background, "color");
     if (!text.empty() && !parseColor(text, color))
-      m_impl->warnOnce(*background, "color '" + text + "' is not 'r g b [a]' nor a color name; "
-                                    "the default background is used", "color");
+      m_impl->warnOnce(*background,
+                       "color '" + text +
+                           "' is not 'r g b [a]' nor a color name; "
+                           "the default background is used",
+                       "color");
   }
   return color;
 }
@@ -275,8 +278,10 @@ void SceneDrawer::drawVisualModels(const std::set<const Node*>& skipped) {
       std::string error;
       texture = m_impl->textures.textureFor(surface->texture, error);
       if (!texture && !error.empty())
-        m_impl->warnOnce(object, "texture '" + surface->texture + "' cannot be read (" + error +
-                                     "); drawn without it", "texturename");
+        m_impl->warnOnce(
+            object,
+            "texture '" + surface->texture + "' cannot be read (" + error + "); drawn without it",
+            "texturename");
       if (texture && surface->texcoords.size() != surface->positions.size()) texture = 0;
     }
     if (texture) {
@@ -291,10 +296,9 @@ void SceneDrawer::drawVisualModels(const std::set<const Node*>& skipped) {
     const bool hasNormals = surface->normals.size() == surface->positions.size();
     const std::vector<Vec3d> computed =
         hasNormals ? std::vector<Vec3d>{} : vertexNormals(surface->positions, surface->triangles);
-    m_report.triangles += drawTriangles(surface->positions, hasNormals ? surface->normals : computed,
-                                        surface->triangles, {},
-                                        texture ? std::span<const Vec2d>(surface->texcoords)
-                                                : std::span<const Vec2d>());
+    m_report.triangles += drawTriangles(
+        surface->positions, hasNormals ? surface->normals : computed, surface->triangles, {},
+        texture ? std::span<const Vec2d>(surface->texcoords) : std::span<const Vec2d>());
     if (texture) {
       glBindTexture(GL_TEXTURE_2D, 0);
       glDisable(GL_TEXTURE_2D);
@@ -358,7 +362,8 @@ void SceneDrawer::drawStates() {
       std::vector<double> indices;
       readNumbers(object, "indices", indices);
       for (double i : indices)
-        if (i >= 0 && i < static_cast<double>(points.size())) fixed.push_back(points[static_cast<std::size_t>(i)]);
+        if (i >= 0 && i < static_cast<double>(points.size()))
+          fixed.push_back(points[static_cast<std::size_t>(i)]);
     }
     glColor4d(kFixedColor[0], kFixedColor[1], kFixedColor[2], 1.0);
     m_report.points += drawPoints(fixed, 7.0);
@@ -385,7 +390,8 @@ void SceneDrawer::drawCollisionModels() {
         std::vector<Vec3i> triangles;
         triangles.reserve(g.triangles.size());
         for (const auto& t : g.triangles)
-          triangles.emplace_back(static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2]));
+          triangles.emplace_back(static_cast<int>(t[0]), static_cast<int>(t[1]),
+                                 static_cast<int>(t[2]));
         if (flags.wireframe) {
           glDisable(GL_LIGHTING);
           m_report.lines += drawTriangleEdges(g.points, triangles);
@@ -393,7 +399,8 @@ void SceneDrawer::drawCollisionModels() {
         } else {
           glEnable(GL_POLYGON_OFFSET_FILL);  // under a visual surface at the same place
           glPolygonOffset(1.0f, 1.0f);
-          m_report.triangles += drawTriangles(g.points, vertexNormals(g.points, triangles), triangles);
+          m_report.triangles +=
+              drawTriangles(g.points, vertexNormals(g.points, triangles), triangles);
           glDisable(GL_POLYGON_OFFSET_FILL);
         }
         break;

@@ -14,7 +14,7 @@
 namespace stroma {
 class Base;
 class Node;
-}
+}  // namespace stroma
 
 namespace stroma::rendering {
 

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
 // The camera's geometry: a fitted view holds the whole box, projection and unprojection are
 // inverse, orbit/pan/zoom move what they say, and a scene's InteractiveCamera is read by name.
+#include "stroma/rendering/Camera.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/Runtime.h"
 #include "simulation/Scene.h"
-#include "stroma/rendering/Camera.h"
 
 namespace stroma::rendering {
 namespace {

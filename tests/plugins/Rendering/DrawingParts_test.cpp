@@ -20,7 +20,8 @@ namespace {
 TEST(RenderingDisplayFlags, ReadsSofasWordsInOrder) {
   DisplayFlags flags;
   EXPECT_TRUE(flags.visualModels);
-  EXPECT_FALSE(flags.behaviorModels || flags.forceFields || flags.collisionModels || flags.wireframe);
+  EXPECT_FALSE(flags.behaviorModels || flags.forceFields || flags.collisionModels ||
+               flags.wireframe);
   std::string unknown;
   flags.apply("hideVisual showBehavior showWireFrame showMappings", unknown);
   EXPECT_FALSE(flags.visualModels);
@@ -33,7 +34,8 @@ TEST(RenderingDisplayFlags, ReadsSofasWordsInOrder) {
   EXPECT_TRUE(flags.collisionModels);
   EXPECT_FALSE(flags.wireframe);
   flags.apply("showAll", unknown);
-  EXPECT_TRUE(flags.visualModels && flags.behaviorModels && flags.forceFields && flags.collisionModels);
+  EXPECT_TRUE(flags.visualModels && flags.behaviorModels && flags.forceFields &&
+              flags.collisionModels);
   flags.apply("showNothingKnown frobnicate", unknown);
   EXPECT_EQ(unknown, "showNothingKnown frobnicate");
 }

@@ -59,7 +59,8 @@ TEST(RenderCommand, BundledScenesMatchTheirReferencePictures) {
     rendering::Image picture, reference;
     std::string error;
     ASSERT_TRUE(rendering::readPng(out.path() / c.frame, picture, error)) << error << run.output;
-    const fs::path file = kSource / "tests/plugins/Rendering/reference" / (std::string(c.name) + ".png");
+    const fs::path file =
+        kSource / "tests/plugins/Rendering/reference" / (std::string(c.name) + ".png");
     if (update) {
       fs::copy_file(out.path() / c.frame, file, fs::copy_options::overwrite_existing);
       continue;
@@ -78,7 +79,8 @@ TEST(RenderCommand, WritesTheFirstFrameEveryKStepsAndTheLast) {
                             " -n 5 --every 2 --size 64x48 --out " + quoted(out.path()));
   ASSERT_EQ(run.exitCode, 0) << run.output;
   // Steps 0, 2, 4 and 5.
-  for (const char* name : {"frame_00000.png", "frame_00001.png", "frame_00002.png", "frame_00003.png"}) {
+  for (const char* name :
+       {"frame_00000.png", "frame_00001.png", "frame_00002.png", "frame_00003.png"}) {
     rendering::Image image;
     std::string error;
     ASSERT_TRUE(rendering::readPng(out.path() / name, image, error)) << name << ": " << error;
@@ -119,7 +121,8 @@ TEST(RenderCommand, BadInputIsRefusedBeforeTheFirstStep) {
       {"--size 0x0", "each side must be 1 to 16384"},
       {"--size 100000x100000", "each side must be 1 to 16384"},
       {"--size big", "WIDTHxHEIGHT"},
-      {"--color-map temperature", "unknown color map 'temperature' (known: displacement, vonmises)"},
+      {"--color-map temperature",
+       "unknown color map 'temperature' (known: displacement, vonmises)"},
       {"--camera \"0 0 1\"", "expected 6 numbers"},
       {"--every 0", "--every expects an integer >= 1"},
       {"-n -3", "-n expects an integer >= 0"},
@@ -149,8 +152,8 @@ TEST(RenderCommand, ColorMapWithNothingToColorIsRefused) {
   const auto scene = dir.write("points.scn", R"(<Node name="root">
       <Node name="A"><MechanicalObject template="Rigid3d" position="0 0 0 0 0 0 1"/></Node></Node>)");
   for (const char* map : {"displacement", "vonmises"}) {
-    const CliRun run = render(quoted(scene) + " -n 1 --out " + quoted(dir.path() / "f") +
-                              " --color-map " + map);
+    const CliRun run =
+        render(quoted(scene) + " -n 1 --out " + quoted(dir.path() / "f") + " --color-map " + map);
     EXPECT_EQ(run.exitCode, 2) << run.output;
     EXPECT_NE(run.output.find("--color-map"), std::string::npos) << run.output;
   }
@@ -162,7 +165,8 @@ TEST(RenderCommand, ASceneShowingNothingIsWarnedAboutAndStillWritten) {
       <VisualStyle displayFlags="showVisual"/><MechanicalObject position="0 0 0  1 1 1"/></Node>)");
   const CliRun run = render(quoted(scene) + " -n 2 --size 32x32 --out " + quoted(dir.path() / "f"));
   EXPECT_EQ(run.exitCode, 0) << run.output;
-  EXPECT_NE(run.output.find("warning: nothing was drawn in frame 0"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("warning: nothing was drawn in frame 0"), std::string::npos)
+      << run.output;
   EXPECT_TRUE(fs::exists(dir.path() / "f" / "frame_00000.png"));
   EXPECT_TRUE(fs::exists(dir.path() / "f" / "frame_00001.png"));
 }
@@ -170,29 +174,31 @@ TEST(RenderCommand, ASceneShowingNothingIsWarnedAboutAndStillWritten) {
 TEST(RenderCommand, VideoWithoutFfmpegIsRefusedWithWhatToInstall) {
   TempDir dir;
   // A PATH with the shell's tools but no ffmpeg.
-  const std::string command = "PATH=/nonexistent \"" + kStroma + "\" render " +
-                              quoted(kSource / "scenes/organ/Organ.scn") + " --video " +
-                              quoted(dir.path() / "a.mp4") + " > " + quoted(dir.path() / "log") + " 2>&1";
+  const std::string command =
+      "PATH=/nonexistent \"" + kStroma + "\" render " + quoted(kSource / "scenes/organ/Organ.scn") +
+      " --video " + quoted(dir.path() / "a.mp4") + " > " + quoted(dir.path() / "log") + " 2>&1";
   const int status = std::system(command.c_str());
   std::ifstream in(dir.path() / "log");
   std::stringstream log;
   log << in.rdbuf();
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 2) << log.str();
-  EXPECT_NE(log.str().find("ffmpeg not found: install Debian's ffmpeg"), std::string::npos) << log.str();
+  EXPECT_NE(log.str().find("ffmpeg not found: install Debian's ffmpeg"), std::string::npos)
+      << log.str();
   EXPECT_FALSE(fs::exists(dir.path() / "a.mp4"));
 }
 
 TEST(RenderCommand, VideoFramesArePipedToFfmpeg) {
   // A stand-in ffmpeg that records its arguments and counts the bytes it is sent.
   TempDir dir;
-  const auto fake = dir.write("bin/ffmpeg", "#!/bin/sh\necho \"$@\" > \"" + (dir.path() / "args").string() +
-                                                "\"\nwc -c > \"" + (dir.path() / "bytes").string() + "\"\n");
+  const auto fake =
+      dir.write("bin/ffmpeg", "#!/bin/sh\necho \"$@\" > \"" + (dir.path() / "args").string() +
+                                  "\"\nwc -c > \"" + (dir.path() / "bytes").string() + "\"\n");
   fs::permissions(fake, fs::perms::owner_all);
-  const std::string command = "PATH=\"" + (dir.path() / "bin").string() + ":$PATH\" \"" + kStroma +
-                              "\" render " + quoted(kSource / "scenes/organ/Organ.scn") +
-                              " -n 4 --every 2 --size 32x24 --video " + quoted(dir.path() / "a.mp4") +
-                              " > " + quoted(dir.path() / "log") + " 2>&1";
+  const std::string command =
+      "PATH=\"" + (dir.path() / "bin").string() + ":$PATH\" \"" + kStroma + "\" render " +
+      quoted(kSource / "scenes/organ/Organ.scn") + " -n 4 --every 2 --size 32x24 --video " +
+      quoted(dir.path() / "a.mp4") + " > " + quoted(dir.path() / "log") + " 2>&1";
   const int status = std::system(command.c_str());
   std::ifstream logIn(dir.path() / "log");
   std::stringstream log;

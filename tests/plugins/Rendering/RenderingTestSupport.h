@@ -24,7 +24,8 @@ constexpr double kMatchingFraction = 0.995;
 /// differ).
 inline double matchingFraction(const rendering::Image& a, const rendering::Image& b,
                                int tolerance = kChannelTolerance) {
-  if (a.width != b.width || a.height != b.height || a.rgba.size() != b.rgba.size() || a.rgba.empty())
+  if (a.width != b.width || a.height != b.height || a.rgba.size() != b.rgba.size() ||
+      a.rgba.empty())
     return 0.0;
   std::size_t matching = 0;
   const std::size_t pixels = a.rgba.size() / 4;
@@ -55,7 +56,8 @@ inline std::string readText(const rendering::Image& image, int x, int y, int sca
         if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
         const std::size_t at = (static_cast<std::size_t>(py) * image.width + px) * 4;
         const int sum = image.rgba[at] + image.rgba[at + 1] + image.rgba[at + 2];
-        if (sum > threshold) rows[r] |= static_cast<std::uint8_t>(1u << (rendering::kGlyphWidth - 1 - c));
+        if (sum > threshold)
+          rows[r] |= static_cast<std::uint8_t>(1u << (rendering::kGlyphWidth - 1 - c));
       }
     char found = '?';
     for (char candidate : alphabet)

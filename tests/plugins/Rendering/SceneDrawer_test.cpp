@@ -2,6 +2,8 @@
 // The scene drawer in an offscreen context (OSMesa): what it draws by the scene's flags, a
 // deformed body against its rest shape, the legend's numbers read back from the pixels, the
 // background and lights, textures good and bad, collision contacts.
+#include "stroma/rendering/SceneDrawer.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,7 +18,6 @@
 #include "simulation/Scene.h"
 #include "stroma/rendering/Camera.h"
 #include "stroma/rendering/SceneBounds.h"
-#include "stroma/rendering/SceneDrawer.h"
 
 namespace stroma::rendering {
 namespace {
@@ -83,7 +84,8 @@ std::array<int, 4> pixel(const Image& image, int x, int y) {
 
 double meanBrightness(const Image& image) {
   double sum = 0;
-  for (std::size_t i = 0; i < image.rgba.size(); i += 4) sum += image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2];
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+    sum += image.rgba[i] + image.rgba[i + 1] + image.rgba[i + 2];
   return sum / (3.0 * image.rgba.size() / 4);
 }
 
@@ -153,15 +155,19 @@ TEST(RenderingSceneDrawer, VonMisesColorsNeedAForceFieldThatGivesStress) {
       <UniformMass totalMass="1"/>
       <TetrahedronFEMForceField youngModulus="1e4" poissonRatio="0.3" topology="@tetras"/>
       <BoxConstraint box="-0.01 -0.01 -0.01  0.11 0.11 0.001"/>
-    </Node>)", why)) << why;
+    </Node>)",
+                     why))
+      << why;
   for (int i = 0; i < 10; ++i) ASSERT_TRUE(f.scene.step());
   DrawOptions options;
   options.colorMap = ColorMapKind::vonMises;
   f.draw(options);
   const FrameReport& report = f.drawer->lastFrame();
   if (!report.colorMapped) {
-    EXPECT_NE(report.colorMapError.find("provides stress"), std::string::npos) << report.colorMapError;
-    GTEST_SKIP() << "this build's TetrahedronFEMForceField gives no stress: " << report.colorMapError;
+    EXPECT_NE(report.colorMapError.find("provides stress"), std::string::npos)
+        << report.colorMapError;
+    GTEST_SKIP() << "this build's TetrahedronFEMForceField gives no stress: "
+                 << report.colorMapError;
   }
   EXPECT_GE(report.colorMin, 0.0);
   EXPECT_GT(report.colorMax, report.colorMin) << "a bent beam is stressed unevenly";
@@ -171,7 +177,9 @@ TEST(RenderingSceneDrawer, ASceneWithNothingToShowDrawsNothingButTheBackground) 
   Fixture f;
   std::string why;
   ASSERT_TRUE(f.load(R"(<Node name="root"><BackgroundSetting color="0 0.5 1"/>
-      <MechanicalObject position="0 0 0  1 1 1"/></Node>)", why)) << why;
+      <MechanicalObject position="0 0 0  1 1 1"/></Node>)",
+                     why))
+      << why;
   const Image image = f.draw();
   EXPECT_EQ(f.drawer->lastFrame().drawn(), 0u);
   for (int y = 0; y < kHeight; y += 7)
@@ -208,7 +216,9 @@ TEST(RenderingSceneDrawer, AVisualStyleAppliesToItsSubtree) {
         <MechanicalObject position="0 0 0  1 0 0  0 1 0"/>
         <Node name="Child"><MechanicalObject position="0 0 1"/></Node></Node>
       <Node name="B"><MechanicalObject position="1 1 1  0 0 1"/></Node>
-    </Node>)", why)) << why;
+    </Node>)",
+                     why))
+      << why;
   f.draw();
   EXPECT_EQ(f.drawer->lastFrame().points, 4u) << "A's 3 points and its child's, not B's";
   // A viewer's override applies everywhere.
@@ -223,7 +233,10 @@ TEST(RenderingSceneDrawer, SceneLightsReplaceTheHeadlight) {
     Fixture f;
     std::string why;
     EXPECT_TRUE(f.load(beamScene(std::string(R"(<LightManager ambient="0 0 0 1"/>
-        <DirectionalLight color="1 1 1" direction=")") + direction + R"("/>)"), why)) << why;
+        <DirectionalLight color="1 1 1" direction=")") +
+                                 direction + R"("/>)"),
+                       why))
+        << why;
     return meanBrightness(f.draw(showing("showForceFields")));
   };
   const double front = brightness("-1 0 0"), back = brightness("1 0 0");
@@ -233,7 +246,8 @@ TEST(RenderingSceneDrawer, SceneLightsReplaceTheHeadlight) {
 std::string texturedQuad(const std::string& texture) {
   return R"(<Node name="root"><BackgroundSetting color="0 0 0"/>
       <Node name="Visual"><OglModel name="quad" position="0 0 0  1 0 0  1 1 0  0 1 0"
-          triangles="0 1 2  0 2 3" texcoords="0 0  1 0  1 1  0 1" texturename=")" + texture +
+          triangles="0 1 2  0 2 3" texcoords="0 0  1 0  1 1  0 1" texturename=")" +
+         texture +
          R"(" material="Default Diffuse 1 1 1 1 1 Ambient 1 0.5 0.5 0.5 1 Specular 0 1 1 1 1 Emissive 0 0 0 0 0 Shininess 0 45"/></Node>
     </Node>)";
 }
@@ -246,7 +260,8 @@ Image twoColorTexture() {
   for (int y = 0; y < 8; ++y)
     for (int x = 0; x < 8; ++x) {
       const bool red = x < 4;
-      image.rgba.insert(image.rgba.end(), {std::uint8_t(red ? 255 : 0), 0, std::uint8_t(red ? 0 : 255), 255});
+      image.rgba.insert(image.rgba.end(),
+                        {std::uint8_t(red ? 255 : 0), 0, std::uint8_t(red ? 0 : 255), 255});
     }
   return image;
 }
@@ -279,7 +294,8 @@ TEST(RenderingSceneDrawer, TexturesAreDrawnAndBadOnesWarnedOnceThenLeftOut) {
     const std::size_t before = f.scene.log().count(MessageLevel::warning);
     f.draw();
     const Image image = f.draw();  // a second frame warns no more
-    EXPECT_EQ(f.scene.log().count(MessageLevel::warning), before + 1) << test::describe(f.scene.log());
+    EXPECT_EQ(f.scene.log().count(MessageLevel::warning), before + 1)
+        << test::describe(f.scene.log());
     const std::string log = test::describe(f.scene.log());
     EXPECT_NE(log.find("/root/Visual/quad"), std::string::npos) << log;
     EXPECT_NE(log.find(bad.filename().string()), std::string::npos) << log;

@@ -3,10 +3,9 @@
 // offscreen renderer (`stroma render`) and the interactive viewer.
 #pragma once
 
-#include <string>
-
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <string>
 
 #include "collision/Aabb.h"
 #include "core/Types.h"

@@ -11,7 +11,7 @@
 namespace stroma {
 class Node;
 class BaseMechanicalState;
-}
+}  // namespace stroma
 
 namespace stroma::rendering {
 

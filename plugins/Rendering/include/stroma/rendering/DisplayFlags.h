@@ -14,10 +14,10 @@ namespace stroma::rendering {
 /// The parts of a scene that are drawn. The default, as SOFA's, shows the visual models only.
 struct DisplayFlags {
   bool visualModels = true;
-  bool behaviorModels = false;  ///< mechanical states as points, fixed points
-  bool forceFields = false;     ///< FEM meshes (the surface of their elements)
-  bool collisionModels = false; ///< collision models and the current contacts
-  bool wireframe = false;       ///< surfaces as their edges
+  bool behaviorModels = false;   ///< mechanical states as points, fixed points
+  bool forceFields = false;      ///< FEM meshes (the surface of their elements)
+  bool collisionModels = false;  ///< collision models and the current contacts
+  bool wireframe = false;        ///< surfaces as their edges
 
   /// Applies SOFA's displayFlags words in order: showVisual (visual models), showVisualModels,
   /// showBehavior (behaviour models and force fields), showBehaviorModels, showForceFields,

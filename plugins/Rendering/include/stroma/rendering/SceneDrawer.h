@@ -19,7 +19,7 @@
 namespace stroma {
 class Node;
 class Base;
-}
+}  // namespace stroma
 
 namespace stroma::rendering {
 
@@ -41,13 +41,13 @@ struct FrameReport {
   std::size_t points = 0;     ///< state points, fixed points, contact points
   std::size_t visualSurfaces = 0;
   std::size_t contacts = 0;
-  bool colorMapped = false;   ///< a field colored something this frame
+  bool colorMapped = false;  ///< a field colored something this frame
   double colorMin = 0, colorMax = 0;
   std::string legendMin, legendMax;  ///< the numbers the legend wrote
   /// Where it wrote them (top-left pixels, y downwards) and at what scale (BitmapFont.h), so
   /// that a test can read them back from the picture.
   int legendMinX = 0, legendMinY = 0, legendMaxX = 0, legendMaxY = 0, legendScale = 1;
-  std::string colorMapError;         ///< why nothing was colored (no such field)
+  std::string colorMapError;  ///< why nothing was colored (no such field)
   std::size_t drawn() const { return triangles + lines + points; }
 };
 
