@@ -252,16 +252,19 @@ std::string texturedQuad(const std::string& texture) {
     </Node>)";
 }
 
-/// Red and blue halves, left to right.
-Image twoColorTexture() {
+/// Quadrants, as the picture file shows them: red top left, blue top right, green bottom
+/// left, yellow bottom right.
+Image quadrantTexture() {
   Image image;
   image.width = 8;
   image.height = 8;
   for (int y = 0; y < 8; ++y)
     for (int x = 0; x < 8; ++x) {
-      const bool red = x < 4;
-      image.rgba.insert(image.rgba.end(),
-                        {std::uint8_t(red ? 255 : 0), 0, std::uint8_t(red ? 0 : 255), 255});
+      const bool top = y < 4, left = x < 4;
+      const std::uint8_t r = (top && left) || (!top && !left) ? 255 : 0;
+      const std::uint8_t g = !top ? 255 : 0;
+      const std::uint8_t b = top && !left ? 255 : 0;
+      image.rgba.insert(image.rgba.end(), {r, g, b, 255});
     }
   return image;
 }
@@ -269,20 +272,27 @@ Image twoColorTexture() {
 TEST(RenderingSceneDrawer, TexturesAreDrawnAndBadOnesWarnedOnceThenLeftOut) {
   test::TempDir dir;
   std::string error;
-  ASSERT_TRUE(writePng(dir.path() / "halves.png", twoColorTexture(), error)) << error;
+  ASSERT_TRUE(writePng(dir.path() / "quadrants.png", quadrantTexture(), error)) << error;
   {
     Fixture f;
     std::string why;
-    ASSERT_TRUE(f.load(texturedQuad((dir.path() / "halves.png").string()), why)) << why;
+    ASSERT_TRUE(f.load(texturedQuad((dir.path() / "quadrants.png").string()), why)) << why;
     f.camera.setEyeAndTarget(Vec3d(0.5, 0.5, 2), Vec3d(0.5, 0.5, 0));
     const Image image = f.draw();
     ASSERT_EQ(f.drawer->lastFrame().visualSurfaces, 1u);
-    const auto left = pixel(image, kWidth / 2 - 10, kHeight / 2);
-    const auto right = pixel(image, kWidth / 2 + 10, kHeight / 2);
-    EXPECT_GT(left[0], 100);
-    EXPECT_LT(left[2], 30);
-    EXPECT_GT(right[2], 100);
-    EXPECT_LT(right[0], 30);
+    // Texture coordinates as OBJ files give them (t = 0 at the bottom of the picture): the
+    // quad shows the picture the right way up.
+    const auto topLeft = pixel(image, kWidth / 2 - 10, kHeight / 2 - 10);
+    const auto topRight = pixel(image, kWidth / 2 + 10, kHeight / 2 - 10);
+    const auto bottomLeft = pixel(image, kWidth / 2 - 10, kHeight / 2 + 10);
+    const auto bottomRight = pixel(image, kWidth / 2 + 10, kHeight / 2 + 10);
+    auto near = [](const std::array<int, 4>& p, int r, int g, int b) {
+      return std::abs(p[0] - r) < 60 && std::abs(p[1] - g) < 60 && std::abs(p[2] - b) < 60;
+    };
+    EXPECT_TRUE(near(topLeft, 255, 0, 0)) << topLeft[0] << " " << topLeft[1] << " " << topLeft[2];
+    EXPECT_TRUE(near(topRight, 0, 0, 255));
+    EXPECT_TRUE(near(bottomLeft, 0, 255, 0));
+    EXPECT_TRUE(near(bottomRight, 255, 255, 0));
     EXPECT_EQ(f.scene.log().count(MessageLevel::warning), 0u) << test::describe(f.scene.log());
   }
   const auto corrupt = dir.write("corrupt.png", "\x89PNG\r\n\x1a\n but nothing after");
