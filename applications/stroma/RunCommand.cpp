@@ -12,6 +12,11 @@
 #include "simulation/RunSummary.h"
 #include "simulation/Scene.h"
 #include "simulation/StateFile.h"
+#include "simulation/Timing.h"
+
+#if STROMA_HAS_EXPORT_FILES
+#include "SceneVtkExport.h"
+#endif
 
 namespace stroma::cli {
 
@@ -108,7 +113,7 @@ int runCommand(const std::vector<std::string>& args) {
   std::vector<std::string> valueOptions = kSceneOptions;
   valueOptions.insert(valueOptions.end(),
                       {"-n", "--steps", "--dt", "--threads", "--export-state", "--export-every", "--print",
-                       "--export-data"});
+                       "--export-data", "--export-vtk"});
   if (!parseArguments(args, valueOptions, {"--verbose"}, a, error)) return usageError(error);
   long long steps = 100, threads = 0, exportEvery = 0;
   double dt = 0;
@@ -116,8 +121,12 @@ int runCommand(const std::vector<std::string>& args) {
   if (!readInteger(a, "-n", 0, steps, error) || !readInteger(a, "--threads", 0, threads, error) ||
       !readInteger(a, "--export-every", 1, exportEvery, error) || !readReal(a, "--dt", dt, error))
     return usageError(error);
-  if (exportEvery && !a.value("--export-state"))
-    return usageError("--export-every needs --export-state FILE");
+  if (exportEvery && !a.value("--export-state") && !a.value("--export-vtk"))
+    return usageError("--export-every needs --export-state FILE or --export-vtk DIR");
+#if !STROMA_HAS_EXPORT_FILES
+  if (a.value("--export-vtk"))
+    return usageError("--export-vtk: this build has no Export plugin (plugins/Export)");
+#endif
   if (!a.values("--export-data").empty() && !a.value("--export-state"))
     return usageError("--export-data needs --export-state FILE");
 
@@ -144,6 +153,25 @@ int runCommand(const std::vector<std::string>& args) {
     writeStateHeader(stateFile);
     if (exportEvery) writeSnapshot(stateFile, snapshot(0));
   }
+#if STROMA_HAS_EXPORT_FILES
+  // --export-vtk DIR: VTU files of every state at step 0, every K steps (1 by default) and the
+  // last step, timed as the phase "exportVtk" (SceneVtkExport.h).
+  std::unique_ptr<SceneVtkExport> vtkExport;
+  auto exportVtk = [&](long long step) {
+    ScopedPhase phase(scene.timing(), "exportVtk");
+    std::string why;
+    if (vtkExport->writeStep(step, scene.root().time(), why)) return true;
+    std::cerr << "stroma: --export-vtk: " << why << "\n";
+    return false;
+  };
+  if (const std::string* dir = a.value("--export-vtk")) {
+    vtkExport = std::make_unique<SceneVtkExport>(scene.root(), *dir);
+    std::string why;
+    if (!vtkExport->open(why)) return usageError("--export-vtk: " + why);
+    if (!exportVtk(0)) return kBadInput;
+  }
+  const long long vtkEvery = exportEvery ? exportEvery : 1;
+#endif
 
   int code = kSuccess;
   long long done = 0;
@@ -156,8 +184,15 @@ int runCommand(const std::vector<std::string>& args) {
       break;
     }
     printData(printed, done + 1, scene.root().time());
-    if (exportEvery && (done + 1) % exportEvery == 0 && done + 1 != steps)
+    if (exportEvery && stateFile.is_open() && (done + 1) % exportEvery == 0 && done + 1 != steps)
       writeSnapshot(stateFile, snapshot(done + 1));
+#if STROMA_HAS_EXPORT_FILES
+    if (vtkExport && ((done + 1) % vtkEvery == 0 || done + 1 == steps) && !exportVtk(done + 1)) {
+      code = kSimulationFailure;
+      ++done;
+      break;
+    }
+#endif
   }
   if (stateFile.is_open()) {
     writeSnapshot(stateFile, snapshot(done));

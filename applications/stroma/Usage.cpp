@@ -24,6 +24,11 @@ const CommandHelp kCommands[] = {
       --export-every K              ... and also every K steps (with step 0)
       --export-data PATH.FIELD      ... with this Data in each snapshot (repeatable), e.g.
                                     /root/Probe/dofs.constraintForce
+      --export-vtk DIR              write every mechanical state as VTU files for ParaView
+                                    (DIR/<state path>_<step>.vtu, one .pvd per state) at
+                                    step 0, every K steps of --export-every (default 1)
+                                    and the last step: positions, cells of the state's
+                                    topology, displacement, velocity, von Mises stress
       --print PATH.FIELD            print this Data after each step (repeatable): the force
                                     a haptic device renders, a solver's iterations...
 )", true},
