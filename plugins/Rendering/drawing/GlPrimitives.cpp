@@ -102,7 +102,9 @@ void drawSphere(const Vec3d& center, double radius) {
     glBegin(GL_QUAD_STRIP);
     for (int k = 0; k <= kSlices; ++k) {
       const double phi = 2 * kPi * k / kSlices;
-      for (double theta : {t0, t1}) {
+      // Lower ring first: each quad then turns counterclockwise seen from outside (front
+      // facing, so that two-sided lighting keeps the outward normal).
+      for (double theta : {t1, t0}) {
         const Vec3d n(std::sin(theta) * std::cos(phi), std::cos(theta),
                       std::sin(theta) * std::sin(phi));
         const Vec3d p = center + radius * n;

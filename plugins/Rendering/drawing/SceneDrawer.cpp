@@ -420,7 +420,9 @@ void SceneDrawer::drawCollisionModels() {
         glEnable(GL_LIGHTING);
         break;
       case PrimitiveKind::sphere:
-        for (std::size_t i = 0; i < g.points.size() && !g.radii.empty(); ++i) {
+        // One radius for all, or one each (a model with fewer radii than centres draws those).
+        for (std::size_t i = 0; i < g.points.size() && (g.radii.size() == 1 || i < g.radii.size());
+             ++i) {
           drawSphere(g.points[i], g.radius(i));
           m_report.triangles += 12 * 8 * 2;
         }
