@@ -153,7 +153,11 @@ void SceneViewer::key(int key, int action, int) {
   if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
   switch (key) {
     case GLFW_KEY_SPACE:
-      if (action == GLFW_PRESS) m_running = !m_running;
+      if (action != GLFW_PRESS) break;
+      m_running = !m_running;
+      // The rate counts from now: the time spent paused is no part of it.
+      m_stepsInWindow = 0;
+      m_windowStart = std::chrono::steady_clock::now();
       break;
     case GLFW_KEY_N:
     case GLFW_KEY_RIGHT:

@@ -97,6 +97,7 @@ ViewerWindow::~ViewerWindow() {
 }
 
 void ViewerWindow::attach(SceneViewer* viewer) {
+  if (!m_window) return;
   glfwSetWindowUserPointer(m_window, viewer);
   if (!viewer) return;
   int w = 0, h = 0;
