@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 
@@ -109,6 +110,57 @@ TEST_F(SceneViewerTest, TheBeamIsDrawnAndItsDeformedFrameDiffersFromItsRestFrame
               changed);
   EXPECT_GT(changed, pixels / 100) << changed << " of " << pixels << " pixels changed";
   EXPECT_GT(countDifferent(deformed, background, 8), pixels / 20);
+}
+
+/// Compares the frame just drawn with tests/plugins/Viewer/reference/<name>.png: at least
+/// 99.5 % of the pixels within 8/255 on every channel (the allowance for another Mesa version's
+/// rasterization and shading; the render tests use the same). With
+/// STROMA_UPDATE_VIEWER_REFERENCES=1 the frame becomes the reference instead
+/// (tests/plugins/Viewer/update-references.sh).
+void expectMatchesReference(const std::vector<unsigned char>& rgb, int width, int height,
+                            const std::string& name) {
+  rendering::Image frame;
+  frame.width = width;
+  frame.height = height;
+  for (std::size_t i = 0; i + 2 < rgb.size(); i += 3)
+    frame.rgba.insert(frame.rgba.end(), {rgb[i], rgb[i + 1], rgb[i + 2], 255});
+  rendering::flipRows(frame);
+  const std::filesystem::path file =
+      std::filesystem::path(STROMA_SOURCE_DIR) / "tests/plugins/Viewer/reference" / (name + ".png");
+  std::string error;
+  if (const char* update = std::getenv("STROMA_UPDATE_VIEWER_REFERENCES");
+      update && std::string(update) == "1") {
+    ASSERT_TRUE(rendering::writePng(file, frame, error)) << error;
+    GTEST_SKIP() << "wrote the reference " << file;
+  }
+  rendering::Image reference;
+  ASSERT_TRUE(rendering::readPng(file, reference, error)) << error;
+  ASSERT_EQ(reference.width, width);
+  ASSERT_EQ(reference.height, height);
+  std::size_t off = 0;
+  for (std::size_t p = 0; p < frame.rgba.size(); p += 4)
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(int(frame.rgba[p + c]) - int(reference.rgba[p + c])) > 8) {
+        ++off;
+        break;
+      }
+  const std::size_t pixels = frame.rgba.size() / 4;
+  EXPECT_LE(off, pixels / 200) << name << ": " << off << " of " << pixels
+                               << " pixels differ from the reference by more than 8";
+}
+
+// The frames of HexaBeam at rest and after 40 steps (one thread, so the same numbers on any
+// machine), text hidden, against their reference pictures.
+TEST_F(SceneViewerTest, RestAndDeformedFramesMatchTheirReferencePictures) {
+  scene.setThreadCount(1);
+  SceneViewer& v = makeViewer({.showText = false});
+  ASSERT_EQ(v.width(), kWidth);
+  ASSERT_EQ(v.height(), kHeight);
+  v.drawFrame();
+  expectMatchesReference(readFrame(), kWidth, kHeight, "hexabeam-rest");
+  steps(40);
+  v.drawFrame();
+  expectMatchesReference(readFrame(), kWidth, kHeight, "hexabeam-step40");
 }
 
 TEST_F(SceneViewerTest, ShiftDragPullsTheGrabbedVertexTowardTheMouseAndReleaseRemovesTheSpring) {
