@@ -10,6 +10,8 @@
 #include <sstream>
 
 #include "MeshioReader.h"
+#include "formats/FormatParsers.h"
+#include "formats/MeshData.h"
 #include "core/PathResolver.h"
 #include "core/StateTypes.h"
 #include "plugins/TestPlugin/TestSupport.h"
@@ -300,6 +302,43 @@ TEST(MeshExporter, TetgenFilesReadBackThroughMeshio) {
   ASSERT_EQ(read.points.size(), 5u);
   EXPECT_EQ(read.points[4][1], 0.7);
   EXPECT_EQ(read.cells.at("tetra"), (std::vector<std::vector<long>>{{0, 1, 2, 3}, {1, 2, 3, 4}}));
+}
+
+// --- VisualModelOBJExporter ------------------------------------------------------------------
+
+TEST(VisualModelOBJExporter, WritesTheVisualSurfacesAndTheirMaterials) {
+  TempDir dir;
+  const std::string base = (dir.path() / "visual").string();
+  SceneUnderTest s;
+  // A quad (split in two triangles by OglModel) moved by its translation, and a triangle.
+  ASSERT_TRUE(s.load(R"(<Node name="root">
+      <VisualModelOBJExporter filename=")" + base + R"(" exportAtBegin="1"/>
+      <Node name="Visual">
+        <OglModel name="plate" position="0 0 0  1 0 0  1 1 0  0 1 0" quads="0 1 2 3"
+                  translation="1 2 3" color="1 0 0 1"/>
+        <OglModel name="flag" position="0 0 1  0.5 0 1  0 0.25 1" triangles="0 1 2"
+                  color="0 0.5 1 0.25"/>
+      </Node>
+    </Node>)"))
+      << describe(s.scene.log());
+  std::string bytes, error;
+  ASSERT_TRUE(meshio::readFileBytes(base + ".obj", bytes, error)) << error;
+  MeshData read;
+  ASSERT_TRUE(meshio::parseObj(bytes, {}, read, error)) << error;
+  ASSERT_EQ(read.positions.size(), 7u);
+  EXPECT_EQ(read.positions[2], Vec3d(2, 3, 3));  // (1 1 0) translated
+  EXPECT_EQ(read.positions[5], Vec3d(0.5, 0, 1));
+  ASSERT_EQ(read.triangles.size(), 3u);
+  // The flag's triangle uses its own points, after the plate's four.
+  EXPECT_EQ(read.triangles[2], (Triangle{4, 5, 6}));
+  std::ifstream mtl(base + ".mtl");
+  std::stringstream text;
+  text << mtl.rdbuf();
+  EXPECT_NE(text.str().find("newmtl plate\nKa"), std::string::npos) << text.str();
+  EXPECT_NE(text.str().find("Kd 1 0 0"), std::string::npos) << text.str();
+  EXPECT_NE(text.str().find("Kd 0 0.5 1"), std::string::npos) << text.str();
+  EXPECT_NE(text.str().find("d 0.25"), std::string::npos) << text.str();
+  EXPECT_NE(bytes.find("usemtl flag"), std::string::npos);
 }
 
 // --- Bad input -------------------------------------------------------------------------------
