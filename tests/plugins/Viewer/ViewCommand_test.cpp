@@ -64,5 +64,19 @@ TEST(ViewCommand, RunsASceneForSomeFramesAndQuits) {
   EXPECT_EQ(run.exitCode, 0) << run.output;
 }
 
+// A scene that does not load: its errors, exit code 2, and no window left behind.
+TEST(ViewCommand, ASceneWithErrorsIsRefused) {
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display) GTEST_SKIP() << "no DISPLAY (ctest runs this under xvfb-run)";
+  TempDir dir;
+  const auto scene = dir.write("bad.scn", R"(<Node name="root">
+    <MechanicalObjekt name="dofs" position="0 0 0"/>
+  </Node>)");
+  const CliRun run = runCli(STROMA_CLI, "view \"" + scene.string() + "\" --frames 1");
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("MechanicalObjekt"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("the scene was not shown"), std::string::npos) << run.output;
+}
+
 }  // namespace
 }  // namespace stroma::test
