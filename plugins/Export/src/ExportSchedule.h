@@ -19,8 +19,11 @@ class ExportSchedule {
 
  public:
   Data<int> d_exportEveryNumberOfSteps{
-      &m_owner, "exportEveryNumberOfSteps", 0,
-      "Write after every N steps (steps N, 2N, ...); 0: never during the run.", {.min = 0.0}};
+      &m_owner,
+      "exportEveryNumberOfSteps",
+      0,
+      "Write after every N steps (steps N, 2N, ...); 0: never during the run.",
+      {.min = 0.0}};
   Data<bool> d_exportAtBegin{&m_owner, "exportAtBegin", false,
                              "Write once before the first step (after initialization)."};
   Data<bool> d_exportAtEnd{&m_owner, "exportAtEnd", false,

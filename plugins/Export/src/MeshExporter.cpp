@@ -36,7 +36,8 @@ void MeshExporter::bwdInit() {
 }
 
 void MeshExporter::stepEnd(double, double) {
-  if (m_ready && m_schedule.stepDone()) write("_" + std::to_string(m_schedule.steps()));
+  if (m_ready && m_schedule.stepDone())
+    write(std::string("_").append(std::to_string(m_schedule.steps())));
 }
 
 void MeshExporter::cleanup() {
@@ -48,9 +49,12 @@ void MeshExporter::write(const std::string& suffix) {
   vtk::UnstructuredMesh mesh;
   const Topology* topology = node() ? node()->getUp<Topology>() : nullptr;
   const auto* state = node() ? node()->get<BaseMechanicalState>() : nullptr;
-  if (!d_position.value().empty()) mesh.points = d_position.value();
-  else if (state) mesh.points = vtk::statePoints(*state);
-  else if (topology) mesh.points = topology->positions();
+  if (!d_position.value().empty())
+    mesh.points = d_position.value();
+  else if (state)
+    mesh.points = vtk::statePoints(*state);
+  else if (topology)
+    mesh.points = topology->positions();
   vtk::CellSelection selection;
   selection.edges = d_edges.value();
   selection.triangles = d_triangles.value();
@@ -86,7 +90,8 @@ void MeshExporter::write(const std::string& suffix) {
   if (all || format == MeshExportFormat::tetgen) {
     // With ALL, a mesh that is not only tetrahedra skips TetGen's format (it has no other cell).
     bool onlyTetrahedra = mesh.cellCount() > 0;
-    for (auto type : mesh.cellTypes) onlyTetrahedra = onlyTetrahedra && type == vtk::CellType::tetra;
+    for (auto type : mesh.cellTypes)
+      onlyTetrahedra = onlyTetrahedra && type == vtk::CellType::tetra;
     if (!all || onlyTetrahedra) {
       if (!vtk::writeTetgen(base, mesh, error)) return fail(error);
       m_written.push_back(base + ".node");

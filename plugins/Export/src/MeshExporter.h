@@ -33,14 +33,18 @@ struct EnumKeywords<MeshExportFormat> {
 /// (STEP: the steps done). When: ExportSchedule.h.
 class MeshExporter final : public Base, public StepListener {
  public:
-  Data<FileName> d_filename{this, "filename", {},
+  Data<FileName> d_filename{this,
+                            "filename",
+                            {},
                             "Output file name, without extension; relative to the working "
                             "folder.",
                             {.output = true}};
   Data<MeshExportFormat> d_format{this, "format", MeshExportFormat::vtkxml,
                                   "File format: vtkxml, vtk, gmsh, tetgen, or ALL of them "
                                   "(netgen is refused)."};
-  Data<std::vector<Vec3d>> d_position{this, "position", {},
+  Data<std::vector<Vec3d>> d_position{this,
+                                      "position",
+                                      {},
                                       "Points to write (nbPoints x 3); empty: the positions of "
                                       "the node's mechanical state, else of its topology.",
                                       {.unit = "m"}};

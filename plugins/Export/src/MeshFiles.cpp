@@ -23,12 +23,18 @@ bool close(std::ofstream& out, const fs::path& file, std::string& error) {
 
 int gmshType(CellType type) {
   switch (type) {
-    case CellType::vertex: return 15;
-    case CellType::line: return 1;
-    case CellType::triangle: return 2;
-    case CellType::quad: return 3;
-    case CellType::tetra: return 4;
-    case CellType::hexahedron: return 5;
+    case CellType::vertex:
+      return 15;
+    case CellType::line:
+      return 1;
+    case CellType::triangle:
+      return 2;
+    case CellType::quad:
+      return 3;
+    case CellType::tetra:
+      return 4;
+    case CellType::hexahedron:
+      return 5;
   }
   return 0;
 }
@@ -42,7 +48,7 @@ void writePoint(std::ostream& out, std::size_t number, const Vec3d& p) {
 
 bool writeGmsh(const fs::path& file, const UnstructuredMesh& mesh, std::string& error) {
   if (!checkMesh(mesh, error)) {
-    error = "'" + file.string() + "': " + error;
+    error = std::string("'").append(file.string()).append("': ").append(error);
     return false;
   }
   std::ofstream out;
@@ -63,13 +69,14 @@ bool writeGmsh(const fs::path& file, const UnstructuredMesh& mesh, std::string& 
 
 bool writeTetgen(const fs::path& base, const UnstructuredMesh& mesh, std::string& error) {
   if (!checkMesh(mesh, error)) {
-    error = "'" + base.string() + "': " + error;
+    error = std::string("'").append(base.string()).append("': ").append(error);
     return false;
   }
   for (CellType type : mesh.cellTypes)
     if (type != CellType::tetra) {
-      error = "TetGen's .ele holds tetrahedra only; the mesh has other cells (choose tetras "
-              "only, or another format)";
+      error =
+          "TetGen's .ele holds tetrahedra only; the mesh has other cells (choose tetras "
+          "only, or another format)";
       return false;
     }
   const fs::path nodeFile = fs::path(base.string() + ".node");

@@ -13,8 +13,7 @@ namespace stroma::vtk {
 
 /// Gmsh 2.2 ASCII: $Nodes (numbered from 1) and $Elements (lines, triangles, quads, tetrahedra,
 /// hexahedra; vertices as points), each with the two tags physical = elementary = 1.
-bool writeGmsh(const std::filesystem::path& file, const UnstructuredMesh& mesh,
-               std::string& error);
+bool writeGmsh(const std::filesystem::path& file, const UnstructuredMesh& mesh, std::string& error);
 
 /// TetGen: `base`.node (the points, numbered from 1) and `base`.ele (the tetrahedra, numbered
 /// from 1). Refused, with `error`, when the mesh has cells other than tetrahedra.

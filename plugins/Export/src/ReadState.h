@@ -29,17 +29,26 @@ namespace stroma {
 class ReadState final : public Base, public StepListener {
  public:
   Data<FileName> d_filename{this, "filename", {}, "State file to read (SOFA's WriteState format)."};
-  Data<double> d_interval{this, "interval", 0.0,
-                          "Time between two reads; 0: at every step.", {.unit = "s", .min = 0.0}};
-  Data<double> d_shift{this, "shift", 0.0,
+  Data<double> d_interval{this,
+                          "interval",
+                          0.0,
+                          "Time between two reads; 0: at every step.",
+                          {.unit = "s", .min = 0.0}};
+  Data<double> d_shift{this,
+                       "shift",
+                       0.0,
                        "Added to the scene time to get the time looked up in the file.",
                        {.unit = "s"}};
   Data<bool> d_loop{this, "loop", false, "Start the file again after its last record."};
   Data<double> d_scalePos{this, "scalePos", 1.0, "Factor applied to the positions read."};
-  Data<Vec3d> d_rotation{this, "rotation", Vec3d::Zero(),
+  Data<Vec3d> d_rotation{this,
+                         "rotation",
+                         Vec3d::Zero(),
                          "Rotation of the positions read: angles about x, y then z.",
                          {.unit = "deg"}};
-  Data<Vec3d> d_translation{this, "translation", Vec3d::Zero(),
+  Data<Vec3d> d_translation{this,
+                            "translation",
+                            Vec3d::Zero(),
                             "Translation added to the positions read (after scale and "
                             "rotation).",
                             {.unit = "m"}};

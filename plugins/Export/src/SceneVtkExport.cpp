@@ -28,8 +28,8 @@ void collectStates(const Node& node, std::vector<const BaseMechanicalState*>& st
 std::string SceneVtkExport::fileStem(const std::string& statePath) {
   std::string stem;
   for (char c : statePath) {
-    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                       (c >= '0' && c <= '9') || c == '-' || c == '_';
+    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                       c == '-' || c == '_';
     stem += plain ? c : '_';
   }
   while (stem.starts_with('_')) stem.erase(0, 1);
@@ -48,7 +48,8 @@ SceneVtkExport::SceneVtkExport(const Node& root, fs::path directory)
     t.stresses = vtk::findStressFields(root, *state);
     t.stem = fileStem(state->path());
     // Two paths that differ only by replaced characters keep distinct files.
-    for (int k = 2; stems.count(t.stem); ++k) t.stem = fileStem(state->path()) + "-" + std::to_string(k);
+    for (int k = 2; stems.count(t.stem); ++k)
+      t.stem = fileStem(state->path()) + "-" + std::to_string(k);
     stems.insert(t.stem);
     m_targets.push_back(std::move(t));
   }
@@ -82,8 +83,8 @@ bool SceneVtkExport::writeStep(long long step, double time, std::string& error) 
     vtk::UnstructuredMesh mesh;
     mesh.points = vtk::statePoints(*t.state);
     std::string why;
-    if (!vtk::appendCells(t.topology, vtk::highestDimensionCells(t.topology),
-                          mesh.points.size(), mesh, why)) {
+    if (!vtk::appendCells(t.topology, vtk::highestDimensionCells(t.topology), mesh.points.size(),
+                          mesh, why)) {
       // A topology that does not describe this state (a mapped state beside it): points only.
       mesh.cellTypes.clear();
       mesh.connectivity.clear();

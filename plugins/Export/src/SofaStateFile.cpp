@@ -38,10 +38,12 @@ bool readAll(const fs::path& file, std::string& text, std::string& error) {
     while ((n = gzread(in, buffer, sizeof buffer)) > 0) text.append(buffer, n);
     const bool failed = n < 0;
     gzclose(in);
-    if (failed) error = "'" + file.string() + "' is not a readable gzip file";
+    if (failed)
+      error = std::string("'").append(file.string()).append("' is not a readable gzip file");
     return !failed;
 #else
-    error = "'" + file.string() + "': this build reads no .gz files (zlib was not found when "
+    error = std::string("'").append(file.string()) +
+            "': this build reads no .gz files (zlib was not found when "
             "it was configured; install zlib1g-dev and rebuild, or gunzip the file)";
     return false;
 #endif
@@ -107,15 +109,16 @@ bool readSofaStateFile(const fs::path& file, std::vector<SofaStateRecord>& recor
     if (line.empty()) continue;
     const std::size_t equals = line.find('=');
     if (equals == std::string_view::npos) {
-      error = where + std::to_string(lineNumber) + ": expected 'KEY= values' (T=, X=, X0=, V=, "
-              "F=), got '" + std::string(line.substr(0, 40)) + "'";
+      error = where + std::to_string(lineNumber) +
+              ": expected 'KEY= values' (T=, X=, X0=, V=, "
+              "F=), got '" +
+              std::string(line.substr(0, 40)) + "'";
       return false;
     }
     const std::string key(trim(line.substr(0, equals)));
     std::string bad;
     if (!readNumbers(line.substr(equals + 1), values, bad)) {
-      error = where + std::to_string(lineNumber) + ": '" + bad + "' is not a number (" + key +
-              "=)";
+      error = where + std::to_string(lineNumber) + ": '" + bad + "' is not a number (" + key + "=)";
       return false;
     }
     if (key == "T") {
@@ -141,10 +144,14 @@ bool readSofaStateFile(const fs::path& file, std::vector<SofaStateRecord>& recor
       return false;
     }
     SofaStateRecord& r = records.back();
-    if (key == "X") r.positions = values, r.hasPositions = true;
-    else if (key == "X0") r.restPositions = values, r.hasRestPositions = true;
-    else if (key == "V") r.velocities = values, r.hasVelocities = true;
-    else if (key == "F") r.forces = values, r.hasForces = true;
+    if (key == "X")
+      r.positions = values, r.hasPositions = true;
+    else if (key == "X0")
+      r.restPositions = values, r.hasRestPositions = true;
+    else if (key == "V")
+      r.velocities = values, r.hasVelocities = true;
+    else if (key == "F")
+      r.forces = values, r.hasForces = true;
     else {
       error = where + std::to_string(lineNumber) + ": unknown key '" + key +
               "=' (expected T=, X=, X0=, V= or F=)";
@@ -196,7 +203,8 @@ bool SofaStateWriter::open(const fs::path& file, std::string& error) {
       return false;
     }
 #else
-    error = "'" + file.string() + "': this build writes no .gz files (zlib was not found when "
+    error = std::string("'").append(file.string()) +
+            "': this build writes no .gz files (zlib was not found when "
             "it was configured); name the file without .gz";
     return false;
 #endif
@@ -224,7 +232,10 @@ bool SofaStateWriter::write(const SofaStateRecord& record, std::string& error) {
     text += "  ";
     text += key;
     text += "=";
-    for (double v : values) text += " " + vtk::formatNumber(v);
+    for (double v : values) {
+      text += ' ';
+      text += vtk::formatNumber(v);
+    }
     text += "\n";
   };
   vector("X", record.hasPositions, record.positions);

@@ -27,8 +27,8 @@ CellSelection highestDimensionCells(const Topology* topology) {
 namespace {
 
 template <class Elements>
-bool appendList(const Elements& elements, CellType type, const char* name,
-                std::size_t pointCount, UnstructuredMesh& mesh, std::string& error) {
+bool appendList(const Elements& elements, CellType type, const char* name, std::size_t pointCount,
+                UnstructuredMesh& mesh, std::string& error) {
   for (std::size_t e = 0; e < elements.size(); ++e) {
     for (Index p : elements[e])
       if (p >= pointCount) {
@@ -43,8 +43,8 @@ bool appendList(const Elements& elements, CellType type, const char* name,
 
 }  // namespace
 
-bool appendCells(const Topology* topology, const CellSelection& selection,
-                 std::size_t pointCount, UnstructuredMesh& mesh, std::string& error) {
+bool appendCells(const Topology* topology, const CellSelection& selection, std::size_t pointCount,
+                 UnstructuredMesh& mesh, std::string& error) {
   if (!topology || !selection.any()) {
     for (Index p = 0; p < pointCount; ++p) mesh.addCell(CellType::vertex, &p);
     return true;

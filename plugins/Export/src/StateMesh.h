@@ -30,8 +30,8 @@ CellSelection highestDimensionCells(const Topology* topology);
 /// Appends the selected elements of `topology` as cells (hexahedra, tetrahedra, quads,
 /// triangles, edges in that order). With nothing selected, or no topology, every point becomes
 /// a vertex cell. False with `error` when an element uses a point past `pointCount`.
-bool appendCells(const Topology* topology, const CellSelection& selection,
-                 std::size_t pointCount, UnstructuredMesh& mesh, std::string& error);
+bool appendCells(const Topology* topology, const CellSelection& selection, std::size_t pointCount,
+                 UnstructuredMesh& mesh, std::string& error);
 
 /// The positions of `state` as points: x y z of a Vec3d state, the centre of a Rigid3d frame,
 /// zeros in the missing coordinates of Vec1d and Vec2d states.

@@ -21,8 +21,7 @@ bool readNumbers(const std::string& text, std::vector<double>& values) {
     while (i < text.size() && (text[i] == ' ' || text[i] == '\n' || text[i] == '\t')) ++i;
     if (i >= text.size()) break;
     std::size_t end = i;
-    while (end < text.size() && text[end] != ' ' && text[end] != '\n' && text[end] != '\t')
-      ++end;
+    while (end < text.size() && text[end] != ' ' && text[end] != '\n' && text[end] != '\t') ++end;
     try {
       std::size_t used = 0;
       values.push_back(std::stod(text.substr(i, end - i), &used));
@@ -48,8 +47,7 @@ bool VTKExporter::resolveFields(const std::vector<std::string>& names,
   for (const std::string& name : names) {
     std::string why;
     const BaseData* data =
-        node() ? resolveDataPath(*node(), name.starts_with('@') ? name : "@" + name, why)
-               : nullptr;
+        node() ? resolveDataPath(*node(), name.starts_with('@') ? name : "@" + name, why) : nullptr;
     if (!data) {
       msgError("'" + name + "': " + (why.empty() ? "not found" : why) +
                    " (expected object.field of a component in this node)",
@@ -88,9 +86,12 @@ void VTKExporter::write() {
   vtk::UnstructuredMesh mesh;
   const Topology* topology = node() ? node()->getUp<Topology>() : nullptr;
   const auto* state = node() ? node()->get<BaseMechanicalState>() : nullptr;
-  if (!d_position.value().empty()) mesh.points = d_position.value();
-  else if (state) mesh.points = vtk::statePoints(*state);
-  else if (topology) mesh.points = topology->positions();
+  if (!d_position.value().empty())
+    mesh.points = d_position.value();
+  else if (state)
+    mesh.points = vtk::statePoints(*state);
+  else if (topology)
+    mesh.points = topology->positions();
 
   vtk::CellSelection selection;
   selection.edges = d_edges.value();
@@ -123,8 +124,8 @@ void VTKExporter::write() {
     }
     return true;
   };
-  if (!addFields(m_pointFields, d_pointsDataFields.value(), mesh.points.size(),
-                 mesh.pointFields, "pointsDataFields", "points") ||
+  if (!addFields(m_pointFields, d_pointsDataFields.value(), mesh.points.size(), mesh.pointFields,
+                 "pointsDataFields", "points") ||
       !addFields(m_cellFields, d_cellsDataFields.value(), mesh.cellCount(), mesh.cellFields,
                  "cellsDataFields", "cells")) {
     m_ready = false;

@@ -27,14 +27,18 @@ class BaseData;
 /// exportAtEnd (ExportSchedule.h).
 class VTKExporter final : public Base, public StepListener {
  public:
-  Data<FileName> d_filename{this, "filename", {},
+  Data<FileName> d_filename{this,
+                            "filename",
+                            {},
                             "Output file name, without extension; relative to the working "
                             "folder.",
                             {.output = true}};
   Data<bool> d_XMLformat{this, "XMLformat", true,
                          "Write VTK XML UnstructuredGrid (.vtu) files; false: the legacy ASCII "
                          "format (.vtk)."};
-  Data<std::vector<Vec3d>> d_position{this, "position", {},
+  Data<std::vector<Vec3d>> d_position{this,
+                                      "position",
+                                      {},
                                       "Points to write (nbPoints x 3); empty: the positions of "
                                       "the node's mechanical state, else of its topology.",
                                       {.unit = "m"}};
@@ -44,11 +48,12 @@ class VTKExporter final : public Base, public StepListener {
   Data<bool> d_tetras{this, "tetras", false, "Write the topology's tetrahedra as cells."};
   Data<bool> d_hexas{this, "hexas", false, "Write the topology's hexahedra as cells."};
   Data<std::vector<std::string>> d_pointsDataFields{
-      this, "pointsDataFields", {},
+      this,
+      "pointsDataFields",
+      {},
       "Data written per point, as object.field names in this node (\"dofs.velocity\")."};
   Data<std::vector<std::string>> d_cellsDataFields{
-      this, "cellsDataFields", {},
-      "Data written per cell, as object.field names in this node."};
+      this, "cellsDataFields", {}, "Data written per cell, as object.field names in this node."};
   ExportSchedule m_schedule{*this};
   Data<bool> d_overwrite{this, "overwrite", false,
                          "Rewrite one file (filename.vtu) instead of numbering them."};

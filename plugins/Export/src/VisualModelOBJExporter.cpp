@@ -20,9 +20,7 @@ void collectVisualModels(Node& node, std::vector<VisualModel*>& models) {
 
 std::string number(double v) { return vtk::formatNumber(v); }
 
-std::string color(const Vec4d& c) {
-  return number(c[0]) + " " + number(c[1]) + " " + number(c[2]);
-}
+std::string color(const Vec4d& c) { return number(c[0]) + " " + number(c[1]) + " " + number(c[2]); }
 
 /// A name usable in OBJ and MTL statements (no spaces).
 std::string plainName(std::string name, std::size_t index) {
@@ -45,7 +43,8 @@ void VisualModelOBJExporter::bwdInit() {
 }
 
 void VisualModelOBJExporter::stepEnd(double, double) {
-  if (m_ready && m_schedule.stepDone()) write("_" + std::to_string(m_schedule.steps()));
+  if (m_ready && m_schedule.stepDone())
+    write(std::string("_").append(std::to_string(m_schedule.steps())));
 }
 
 void VisualModelOBJExporter::cleanup() {
@@ -119,8 +118,8 @@ void VisualModelOBJExporter::write(const std::string& suffix) {
     return;
   }
   if (written == 0 && !m_warnedEmpty) {
-    msgWarning("no visual model with a surface under " + (node() ? node()->path() : "?") +
-               ": '" + objFile + "' holds no object");
+    msgWarning("no visual model with a surface under " + (node() ? node()->path() : "?") + ": '" +
+               objFile + "' holds no object");
     m_warnedEmpty = true;
   }
   m_written.push_back(objFile);

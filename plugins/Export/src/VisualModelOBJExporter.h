@@ -21,7 +21,9 @@ namespace stroma {
 /// surface writes an OBJ with no object, and says so once (a warning).
 class VisualModelOBJExporter final : public Base, public StepListener {
  public:
-  Data<FileName> d_filename{this, "filename", {},
+  Data<FileName> d_filename{this,
+                            "filename",
+                            {},
                             "Output file name, without extension; relative to the working "
                             "folder.",
                             {.output = true}};

@@ -11,12 +11,18 @@ namespace fs = std::filesystem;
 
 int pointCount(CellType type) {
   switch (type) {
-    case CellType::vertex: return 1;
-    case CellType::line: return 2;
-    case CellType::triangle: return 3;
-    case CellType::quad: return 4;
-    case CellType::tetra: return 4;
-    case CellType::hexahedron: return 8;
+    case CellType::vertex:
+      return 1;
+    case CellType::line:
+      return 2;
+    case CellType::triangle:
+      return 3;
+    case CellType::quad:
+      return 4;
+    case CellType::tetra:
+      return 4;
+    case CellType::hexahedron:
+      return 8;
   }
   return 0;
 }
@@ -64,11 +70,20 @@ std::string escapeXml(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -98,8 +113,7 @@ bool finish(std::ofstream& out, const fs::path& file, std::string& error) {
 
 /// Numbers separated by spaces, `perLine` per line.
 template <class Range>
-void writeNumbers(std::ostream& out, const Range& values, std::size_t perLine,
-                  const char* indent) {
+void writeNumbers(std::ostream& out, const Range& values, std::size_t perLine, const char* indent) {
   std::size_t n = 0;
   for (const auto& v : values) {
     out << (n % perLine == 0 ? indent : " ");
@@ -131,7 +145,7 @@ std::vector<double> flatten(const std::vector<Vec3d>& points) {
 
 bool writeVtu(const fs::path& file, const UnstructuredMesh& mesh, std::string& error) {
   if (!checkMesh(mesh, error)) {
-    error = "'" + file.string() + "': " + error;
+    error = std::string("'").append(file.string()).append("': ").append(error);
     return false;
   }
   std::ofstream out;
@@ -169,7 +183,7 @@ bool writeVtu(const fs::path& file, const UnstructuredMesh& mesh, std::string& e
 
 bool writeVtkLegacy(const fs::path& file, const UnstructuredMesh& mesh, std::string& error) {
   if (!checkMesh(mesh, error)) {
-    error = "'" + file.string() + "': " + error;
+    error = std::string("'").append(file.string()).append("': ").append(error);
     return false;
   }
   std::ofstream out;
@@ -177,8 +191,7 @@ bool writeVtkLegacy(const fs::path& file, const UnstructuredMesh& mesh, std::str
   out << "# vtk DataFile Version 3.0\nStroma export\nASCII\nDATASET UNSTRUCTURED_GRID\n";
   out << "POINTS " << mesh.points.size() << " double\n";
   writeNumbers(out, flatten(mesh.points), 3, "");
-  out << "CELLS " << mesh.cellCount() << ' ' << mesh.cellCount() + mesh.connectivity.size()
-      << '\n';
+  out << "CELLS " << mesh.cellCount() << ' ' << mesh.cellCount() + mesh.connectivity.size() << '\n';
   std::size_t next = 0;
   for (CellType type : mesh.cellTypes) {
     const int n = pointCount(type);

@@ -21,7 +21,14 @@ namespace stroma::vtk {
 
 /// VTK's cell type numbers (vtkCellType.h) of the cells Stroma writes; vertex orders are
 /// Stroma's (TopologyTypes.h), which are VTK's for these types.
-enum class CellType : int { vertex = 1, line = 3, triangle = 5, quad = 9, tetra = 10, hexahedron = 12 };
+enum class CellType : int {
+  vertex = 1,
+  line = 3,
+  triangle = 5,
+  quad = 9,
+  tetra = 10,
+  hexahedron = 12
+};
 
 /// Number of points of a cell of `type`.
 int pointCount(CellType type);
@@ -36,8 +43,8 @@ struct FieldArray {
 /// Points, cells and fields of one unstructured grid.
 struct UnstructuredMesh {
   std::vector<Vec3d> points;
-  std::vector<CellType> cellTypes;     ///< one per cell
-  std::vector<Index> connectivity;     ///< the cells' points, cell after cell
+  std::vector<CellType> cellTypes;      ///< one per cell
+  std::vector<Index> connectivity;      ///< the cells' points, cell after cell
   std::vector<FieldArray> pointFields;  ///< values per point
   std::vector<FieldArray> cellFields;   ///< values per cell
 
@@ -54,8 +61,7 @@ bool checkMesh(const UnstructuredMesh& mesh, std::string& error);
 
 /// Writes `mesh` as a VTK XML UnstructuredGrid file. False with `error` (the file and why) when
 /// the mesh is inconsistent or the file cannot be written.
-bool writeVtu(const std::filesystem::path& file, const UnstructuredMesh& mesh,
-              std::string& error);
+bool writeVtu(const std::filesystem::path& file, const UnstructuredMesh& mesh, std::string& error);
 
 /// Writes `mesh` as a legacy VTK file (version 3.0, ASCII, DATASET UNSTRUCTURED_GRID; fields
 /// as FIELD arrays). Same errors.

@@ -23,23 +23,33 @@ class BaseMechanicalState;
 /// degrees of freedom. A name ending in ".gz" is gzip-compressed.
 class WriteState final : public Base, public StepListener {
  public:
-  Data<FileName> d_filename{this, "filename", {},
+  Data<FileName> d_filename{this,
+                            "filename",
+                            {},
                             "Output file (\".gz\": compressed); relative to the working folder.",
                             {.output = true}};
   Data<bool> d_writeX{this, "writeX", true, "Write the positions (X=)."};
   Data<bool> d_writeX0{this, "writeX0", false, "Write the rest positions (X0=)."};
   Data<bool> d_writeV{this, "writeV", false, "Write the velocities (V=)."};
   Data<bool> d_writeF{this, "writeF", false, "Write the forces (F=)."};
-  Data<std::vector<double>> d_time{this, "time", {0.0},
+  Data<std::vector<double>> d_time{this,
+                                   "time",
+                                   {0.0},
                                    "Times to write at (increasing), before `period` applies.",
                                    {.unit = "s", .min = 0.0}};
-  Data<double> d_period{this, "period", 0.0,
+  Data<double> d_period{this,
+                        "period",
+                        0.0,
                         "Time between records after the last of `time`; 0: none.",
                         {.unit = "s", .min = 0.0}};
-  Data<std::vector<unsigned>> d_DOFsX{this, "DOFsX", {},
+  Data<std::vector<unsigned>> d_DOFsX{this,
+                                      "DOFsX",
+                                      {},
                                       "Degrees of freedom whose positions are written; empty: "
                                       "all."};
-  Data<std::vector<unsigned>> d_DOFsV{this, "DOFsV", {},
+  Data<std::vector<unsigned>> d_DOFsV{this,
+                                      "DOFsV",
+                                      {},
                                       "Degrees of freedom whose velocities (and forces) are "
                                       "written; empty: all."};
 

@@ -21,8 +21,7 @@ namespace stroma::fem {
 /// Von Mises stress (Pa) of the displacement gradient H (dimensionless), shear modulus mu (Pa).
 inline double computeVonMisesStress(const Eigen::Matrix3d& H, double shearModulus) {
   const Eigen::Matrix3d strain = 0.5 * (H + H.transpose());
-  const Eigen::Matrix3d deviator =
-      strain - (strain.trace() / 3.0) * Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d deviator = strain - (strain.trace() / 3.0) * Eigen::Matrix3d::Identity();
   const Eigen::Matrix3d s = 2.0 * shearModulus * deviator;
   return std::sqrt(1.5 * s.cwiseProduct(s).sum());
 }

@@ -10,10 +10,10 @@
 #include <sstream>
 
 #include "MeshioReader.h"
-#include "formats/FormatParsers.h"
-#include "formats/MeshData.h"
 #include "core/PathResolver.h"
 #include "core/StateTypes.h"
+#include "formats/FormatParsers.h"
+#include "formats/MeshData.h"
 #include "plugins/TestPlugin/TestSupport.h"
 #include "simulation/MechanicalState.h"
 #include "simulation/Scene.h"
@@ -37,19 +37,24 @@ std::string beamScene(const std::string& extra) {
     <UniformMass totalMass="10"/>
     <HexahedronFEMForceField name="fem" youngModulus="2000" poissonRatio="0.3"/>
     <FixedProjectiveConstraint indices="0 1 2 3 4 5 6 7 8"/>
-    )" + extra + R"(
+    )" + extra +
+         R"(
   </Node>
 </Node>)";
 }
 
 /// The same grid without a solver: what ReadState sets is what the scene shows.
-std::string replayScene(const std::string& readState, const std::string& grid =
-                            R"(nx="3" ny="3" nz="5" xmin="0" xmax="2" ymin="0" ymax="2" zmin="0" zmax="4")") {
+std::string replayScene(
+    const std::string& readState,
+    const std::string& grid =
+        R"(nx="3" ny="3" nz="5" xmin="0" xmax="2" ymin="0" ymax="2" zmin="0" zmax="4")") {
   return R"(<Node name="root" dt="0.01" gravity="0 -9.81 0">
   <Node name="Beam">
-    <RegularGridTopology name="grid" )" + grid + R"(/>
+    <RegularGridTopology name="grid" )" +
+         grid + R"(/>
     <MechanicalObject name="dofs"/>
-    )" + readState + R"(
+    )" + readState +
+         R"(
   </Node>
 </Node>)";
 }
@@ -141,8 +146,8 @@ TEST(WriteState, WritesSofasFormatAtItsTimes) {
   std::vector<double> values;
   for (double value; xs >> value;) values.push_back(value);
   // The record at 0.08 holds the state after step 8: points 44 and 2, in that order.
-  EXPECT_EQ(values, (std::vector<double>{x8[44].x(), x8[44].y(), x8[44].z(), x8[2].x(),
-                                         x8[2].y(), x8[2].z()}));
+  EXPECT_EQ(values, (std::vector<double>{x8[44].x(), x8[44].y(), x8[44].z(), x8[2].x(), x8[2].y(),
+                                         x8[2].z()}));
   std::istringstream vs(lines[11].substr(5));
   values.clear();
   for (double value; vs >> value;) values.push_back(value);
@@ -169,9 +174,9 @@ TEST(ReadState, ReadsAFileWrittenBySofasWriteState) {
   const fs::path file =
       fs::path(STROMA_SOURCE_DIR) / "tests/plugins/Export/data/sofa-beam-writestate.txt";
   SceneUnderTest s;
-  ASSERT_TRUE(s.load(replayScene(
-      "<ReadState name=\"StateReader\" filename=\"" + file.string() + "\"/>",
-      R"(nx="3" ny="3" nz="7" xmin="0" xmax="3" ymin="0" ymax="3" zmin="0" zmax="7")")))
+  ASSERT_TRUE(s.load(
+      replayScene("<ReadState name=\"StateReader\" filename=\"" + file.string() + "\"/>",
+                  R"(nx="3" ny="3" nz="7" xmin="0" xmax="3" ymin="0" ymax="3" zmin="0" zmax="7")")))
       << describe(s.scene.log());
   const char* times[] = {"0.01", "0.02", "0.03", "0.04", "0.05",
                          "0.06", "0.07", "0.08", "0.09", "0.1"};
@@ -192,10 +197,10 @@ TEST(ReadState, ShiftScaleTranslationAndLoop) {
       fs::path(STROMA_SOURCE_DIR) / "tests/plugins/Export/data/sofa-beam-writestate.txt";
   SceneUnderTest s;
   // shift 0.05: after the first step (t = 0.01) the record of 0.06; positions doubled, moved.
-  ASSERT_TRUE(s.load(replayScene(
-      "<ReadState filename=\"" + file.string() +
-          "\" shift=\"0.05\" scalePos=\"2\" translation=\"1 0 0\" loop=\"1\"/>",
-      R"(nx="3" ny="3" nz="7" xmin="0" xmax="3" ymin="0" ymax="3" zmin="0" zmax="7")")))
+  ASSERT_TRUE(s.load(
+      replayScene("<ReadState filename=\"" + file.string() +
+                      "\" shift=\"0.05\" scalePos=\"2\" translation=\"1 0 0\" loop=\"1\"/>",
+                  R"(nx="3" ny="3" nz="7" xmin="0" xmax="3" ymin="0" ymax="3" zmin="0" zmax="7")")))
       << describe(s.scene.log());
   ASSERT_TRUE(s.scene.step());
   std::vector<double> expected = recordPositions(file, "0.06");
@@ -217,7 +222,8 @@ TEST(VTKExporter, FilesReadBackThroughMeshio) {
   ASSERT_TRUE(s.load(beamScene("<VTKExporter filename=\"" + base +
                                "\" edges=\"0\" hexas=\"1\" pointsDataFields=\"dofs.velocity\" "
                                "exportEveryNumberOfSteps=\"2\" exportAtBegin=\"1\"/>"
-                               "<VTKExporter name=\"legacy\" filename=\"" + base +
+                               "<VTKExporter name=\"legacy\" filename=\"" +
+                               base +
                                "-legacy\" XMLformat=\"0\" edges=\"0\" hexas=\"1\" "
                                "overwrite=\"1\" exportEveryNumberOfSteps=\"4\"/>")))
       << describe(s.scene.log());
@@ -226,7 +232,7 @@ TEST(VTKExporter, FilesReadBackThroughMeshio) {
   ASSERT_TRUE(fs::exists(base + "_1.vtu"));  // step 2
   ASSERT_FALSE(fs::exists(base + "_3.vtu"));
   const std::vector<Vec3d> x = s.positions(), v = s.velocities();
-  for (const std::string name : {base + "_2.vtu", base + "-legacy.vtk"}) {
+  for (const std::string& name : {base + "_2.vtu", base + "-legacy.vtk"}) {
     SCOPED_TRACE(name);
     const MeshioMesh read = readWithMeshio(name);
     ASSERT_EQ(read.points.size(), x.size());
@@ -264,14 +270,16 @@ TEST(MeshExporter, OutputReadsBackThroughStromasLoadersAndMeshio) {
     const std::string loader =
         std::string(extension) == ".msh" ? "MeshGmshLoader" : "MeshVTKLoader";
     SceneUnderTest r;
-    ASSERT_TRUE(r.load("<Node name=\"root\"><" + loader + " name=\"loader\" filename=\"" +
-                       base + extension + "\"/></Node>"))
+    ASSERT_TRUE(r.load("<Node name=\"root\"><" + loader + " name=\"loader\" filename=\"" + base +
+                       extension + "\"/></Node>"))
         << describe(r.scene.log());
     std::string why;
     const Base* object = resolveObjectPath(r.scene.root(), "@/loader", why);
     ASSERT_NE(object, nullptr) << why;
-    const auto* position = dynamic_cast<const Data<std::vector<Vec3d>>*>(object->findData("position"));
-    const auto* hexas = dynamic_cast<const Data<std::vector<Hexahedron>>*>(object->findData("hexahedra"));
+    const auto* position =
+        dynamic_cast<const Data<std::vector<Vec3d>>*>(object->findData("position"));
+    const auto* hexas =
+        dynamic_cast<const Data<std::vector<Hexahedron>>*>(object->findData("hexahedra"));
     ASSERT_TRUE(position && hexas);
     EXPECT_EQ(position->value(), x);
     EXPECT_EQ(hexas->value(), hexahedra);
@@ -295,7 +303,8 @@ TEST(MeshExporter, TetgenFilesReadBackThroughMeshio) {
   ASSERT_TRUE(s.load(R"(<Node name="root"><Node name="Beam">
       <MeshTopology name="grid" tetrahedra="0 1 2 3  1 2 3 4"/>
       <MechanicalObject name="dofs" position="0 0 0  1 0 0  0 1 0  0 0 1  0.3 0.7 1.1"/>
-      <MeshExporter filename=")" + base + R"(" format="tetgen" exportAtBegin="1"/>
+      <MeshExporter filename=")" +
+                     base + R"(" format="tetgen" exportAtBegin="1"/>
     </Node></Node>)"))
       << describe(s.scene.log());
   const MeshioMesh read = readWithMeshio(base + ".ele", "tetgen");
@@ -312,7 +321,8 @@ TEST(VisualModelOBJExporter, WritesTheVisualSurfacesAndTheirMaterials) {
   SceneUnderTest s;
   // A quad (split in two triangles by OglModel) moved by its translation, and a triangle.
   ASSERT_TRUE(s.load(R"(<Node name="root">
-      <VisualModelOBJExporter filename=")" + base + R"(" exportAtBegin="1"/>
+      <VisualModelOBJExporter filename=")" +
+                     base + R"(" exportAtBegin="1"/>
       <Node name="Visual">
         <OglModel name="plate" position="0 0 0  1 0 0  1 1 0  0 1 0" quads="0 1 2 3"
                   translation="1 2 3" color="1 0 0 1"/>
@@ -363,19 +373,23 @@ TEST_P(ExportComponentBadInput, IsRefusedWithAMessageNamingTheField) {
   EXPECT_FALSE(s.load(beamScene(component))) << component;
   bool found = false;
   for (const Message& m : errors(s.scene.log()))
-    found = found || (m.field == GetParam().field && m.text.find(GetParam().needle) != std::string::npos);
+    found = found ||
+            (m.field == GetParam().field && m.text.find(GetParam().needle) != std::string::npos);
   EXPECT_TRUE(found) << "expected an error on '" << GetParam().field << "' with '"
-                     << GetParam().needle << "'; got:\n" << describe(s.scene.log());
+                     << GetParam().needle << "'; got:\n"
+                     << describe(s.scene.log());
 }
 
 const BadInput kBadInputs[] = {
     {"VTKExporterMissingFolder", R"(<VTKExporter filename="/nonexistent/folder/beam"/>)",
      "filename", "does not exist"},
-    {"VTKExporterFolderIsAFile", R"(<VTKExporter filename="%DIR%/bad.state/beam"/>)",
-     "filename", "does not exist"},
-    {"VTKExporterUnknownField", R"(<VTKExporter filename="%DIR%/b" pointsDataFields="dofs.nothing"/>)",
-     "pointsDataFields", "dofs.nothing"},
-    {"VTKExporterNegativeEvery", R"(<VTKExporter filename="%DIR%/b" exportEveryNumberOfSteps="-2"/>)",
+    {"VTKExporterFolderIsAFile", R"(<VTKExporter filename="%DIR%/bad.state/beam"/>)", "filename",
+     "does not exist"},
+    {"VTKExporterUnknownField",
+     R"(<VTKExporter filename="%DIR%/b" pointsDataFields="dofs.nothing"/>)", "pointsDataFields",
+     "dofs.nothing"},
+    {"VTKExporterNegativeEvery",
+     R"(<VTKExporter filename="%DIR%/b" exportEveryNumberOfSteps="-2"/>)",
      "exportEveryNumberOfSteps", "-2"},
     {"MeshExporterUnknownFormat", R"(<MeshExporter filename="%DIR%/m" format="stl"/>)", "format",
      "stl"},

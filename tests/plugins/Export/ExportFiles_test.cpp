@@ -19,11 +19,11 @@
 namespace stroma::test {
 namespace {
 
-using vtk::CellType;
 using meshio::parseGmsh;
 using meshio::parseVtkLegacy;
 using meshio::parseVtkXml;
 using meshio::readFileBytes;
+using vtk::CellType;
 
 /// Two hexahedra side by side and a tetrahedron on top, with points whose coordinates have
 /// all their digits, a vector and a scalar field per point, a scalar per cell.
@@ -62,8 +62,8 @@ std::vector<std::vector<long>> cellsOf(const vtk::UnstructuredMesh& mesh, CellTy
   std::size_t next = 0;
   for (CellType t : mesh.cellTypes) {
     const int n = vtk::pointCount(t);
-    if (t == type) cells.emplace_back(mesh.connectivity.begin() + next,
-                                      mesh.connectivity.begin() + next + n);
+    if (t == type)
+      cells.emplace_back(mesh.connectivity.begin() + next, mesh.connectivity.begin() + next + n);
     next += n;
   }
   return cells;
@@ -159,11 +159,11 @@ TEST(ExportFiles, PvdListsItsFilesAndTimes) {
   ASSERT_TRUE(vtk::writePvd(dir.path() / "a.pvd", entries, error)) << error;
   if (!std::filesystem::exists("/usr/bin/python3")) GTEST_SKIP() << "/usr/bin/python3 missing";
   // Python's XML parser, independent of the writer: one line "time file" per data set.
-  const CliRun run = runCli(
-      "/usr/bin/python3",
-      "-c \"import sys, xml.etree.ElementTree as E; [print(repr(float(d.get('timestep'))) + "
-      "'|' + d.get('file')) for d in E.parse(sys.argv[1]).iter('DataSet')]\" \"" +
-          (dir.path() / "a.pvd").string() + "\"");
+  const CliRun run =
+      runCli("/usr/bin/python3",
+             "-c \"import sys, xml.etree.ElementTree as E; [print(repr(float(d.get('timestep'))) + "
+             "'|' + d.get('file')) for d in E.parse(sys.argv[1]).iter('DataSet')]\" \"" +
+                 (dir.path() / "a.pvd").string() + "\"");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   std::istringstream lines(run.output);
   std::string line;

@@ -35,9 +35,9 @@ inline bool meshioAvailable(std::string& why) {
   return run.exitCode == 0;
 }
 
-#define STROMA_SKIP_WITHOUT_MESHIO()                       \
-  do {                                                     \
-    std::string whyNot;                                    \
+#define STROMA_SKIP_WITHOUT_MESHIO()                                      \
+  do {                                                                    \
+    std::string whyNot;                                                   \
     if (!::stroma::test::meshioAvailable(whyNot)) GTEST_SKIP() << whyNot; \
   } while (0)
 
@@ -46,7 +46,8 @@ inline bool meshioAvailable(std::string& why) {
 inline MeshioMesh readWithMeshio(const std::filesystem::path& file,
                                  const std::string& format = "") {
   MeshioMesh mesh;
-  const std::string script = std::string(STROMA_SOURCE_DIR) + "/tests/plugins/Export/meshio_dump.py";
+  const std::string script =
+      std::string(STROMA_SOURCE_DIR) + "/tests/plugins/Export/meshio_dump.py";
   const CliRun run = runCli("/usr/bin/python3", "\"" + script + "\" \"" + file.string() + "\"" +
                                                     (format.empty() ? "" : " " + format));
   EXPECT_EQ(run.exitCode, 0) << "meshio could not read " << file << ":\n" << run.output;

@@ -92,11 +92,11 @@ TEST(RunExportVtk, FilesGiveBackTheRunsStatesAndStress) {
   EXPECT_GT(*std::max_element(perElement.begin(), perElement.end()), 0.1);  // the beam bends
 
   // The collection: one data set per exported step, with the state file's times.
-  const CliRun pvd = runCli(
-      "/usr/bin/python3",
-      "-c \"import sys, xml.etree.ElementTree as E; [print(repr(float(d.get('timestep'))) + "
-      "'|' + d.get('file')) for d in E.parse(sys.argv[1]).iter('DataSet')]\" \"" +
-          (out / "root_Beam_dofs.pvd").string() + "\"");
+  const CliRun pvd =
+      runCli("/usr/bin/python3",
+             "-c \"import sys, xml.etree.ElementTree as E; [print(repr(float(d.get('timestep'))) + "
+             "'|' + d.get('file')) for d in E.parse(sys.argv[1]).iter('DataSet')]\" \"" +
+                 (out / "root_Beam_dofs.pvd").string() + "\"");
   ASSERT_EQ(pvd.exitCode, 0) << pvd.output;
   std::istringstream lines(pvd.output);
   std::string line;

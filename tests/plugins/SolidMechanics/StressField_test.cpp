@@ -3,6 +3,8 @@
 // tension the von Mises stress is |sigma_xx| = E eps (lateral contraction -nu eps free), a
 // rigid rotation gives zero with the rotating methods, a rotated stretch the same stress, and
 // the value per point is the mean of the elements around it.
+#include "simulation/StressField.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -12,7 +14,6 @@
 
 #include "FemTestScenes.h"
 #include "plugins/TestPlugin/TestSupport.h"
-#include "simulation/StressField.h"
 
 namespace stroma::test {
 namespace {
@@ -35,10 +36,9 @@ class StressScene {
   explicit StressScene(const StressCase& c) : m_scene(m_runtime) {
     useTestPlugins(m_runtime);
     m_mesh = makeBoxMesh(Vec3d(2, 1, 1), Vec3i(2, 1, 1));
-    const std::string field = std::string("<") + c.component +
-                              " name=\"fem\" youngModulus=\"" + std::to_string(kYoung) +
-                              "\" poissonRatio=\"" + std::to_string(kPoisson) + "\" method=\"" +
-                              c.method + "\"/>";
+    const std::string field = std::string("<") + c.component + " name=\"fem\" youngModulus=\"" +
+                              std::to_string(kYoung) + "\" poissonRatio=\"" +
+                              std::to_string(kPoisson) + "\" method=\"" + c.method + "\"/>";
     m_loaded = loadQuietly(m_scene, femScene(m_mesh, c.elements, field));
   }
   bool loaded() const { return m_loaded; }
@@ -126,8 +126,10 @@ TEST_P(CorotationalStress, PerPointIsTheMeanOfTheElementsAround) {
     for (std::size_t e = 0; e < elements.size(); ++e)
       for (unsigned p : elements[e]) sum[p] += perElement[e], ++count[p];
   };
-  if (tetrahedra) add(scene.mesh().tetrahedra);
-  else add(scene.mesh().hexahedra);
+  if (tetrahedra)
+    add(scene.mesh().tetrahedra);
+  else
+    add(scene.mesh().hexahedra);
   for (std::size_t p = 0; p < sum.size(); ++p) {
     ASSERT_GT(count[p], 0);
     EXPECT_NEAR(perPoint[p], sum[p] / count[p], 1e-12 * kYoung) << "point " << p;
