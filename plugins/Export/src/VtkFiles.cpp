@@ -114,16 +114,20 @@ bool finish(std::ofstream& out, const fs::path& file, std::string& error) {
 /// Numbers separated by spaces, `perLine` per line.
 template <class Range>
 void writeNumbers(std::ostream& out, const Range& values, std::size_t perLine, const char* indent) {
+  // Formatted into one buffer with to_chars and written at once: a stream insertion per number
+  // cost about as much as the formatting.
+  std::string text;
+  const std::string_view lead(indent);
+  char number[32];
   std::size_t n = 0;
   for (const auto& v : values) {
-    out << (n % perLine == 0 ? indent : " ");
-    if constexpr (std::is_floating_point_v<std::decay_t<decltype(v)>>)
-      out << formatNumber(v);
-    else
-      out << v;
-    if (++n % perLine == 0) out << '\n';
+    if (n % perLine == 0) text += lead;
+    else text += ' ';
+    text.append(number, std::to_chars(number, number + sizeof number, v).ptr);
+    if (++n % perLine == 0) text += '\n';
   }
-  if (n % perLine != 0) out << '\n';
+  if (n % perLine != 0) text += '\n';
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
 }
 
 void writeXmlArray(std::ostream& out, const FieldArray& field) {
