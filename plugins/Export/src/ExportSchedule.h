@@ -5,6 +5,8 @@
 // and mapping is initialized then) and at cleanup for exportAtEnd.
 #pragma once
 
+#include <string>
+
 #include "core/Base.h"
 #include "core/Data.h"
 
@@ -40,9 +42,18 @@ class ExportSchedule {
   bool atEnd() const { return d_enable.value() && d_exportAtEnd.value(); }
   /// Steps done since the scene was loaded.
   long long steps() const { return m_steps; }
+  /// What follows the file name of the next file, as SOFA's exporters number them: the export's
+  /// number from 1 on 5 digits ("00001") when exportEveryNumberOfSteps > 0, else nothing (one
+  /// file, rewritten by a later export).
+  std::string nextFileSuffix() {
+    if (d_exportEveryNumberOfSteps.value() <= 0) return {};
+    const std::string number = std::to_string(++m_exports);
+    return std::string(number.size() < 5 ? 5 - number.size() : 0, '0') + number;
+  }
 
  private:
   long long m_steps = 0;
+  long long m_exports = 0;
 };
 
 }  // namespace stroma

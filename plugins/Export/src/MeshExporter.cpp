@@ -32,16 +32,15 @@ void MeshExporter::init() {
 }
 
 void MeshExporter::bwdInit() {
-  if (m_ready && m_schedule.atBegin()) write("");
+  if (m_ready && m_schedule.atBegin()) write(m_schedule.nextFileSuffix());
 }
 
 void MeshExporter::stepEnd(double, double) {
-  if (m_ready && m_schedule.stepDone())
-    write(std::string("_").append(std::to_string(m_schedule.steps())));
+  if (m_ready && m_schedule.stepDone()) write(m_schedule.nextFileSuffix());
 }
 
 void MeshExporter::cleanup() {
-  if (m_ready && m_schedule.atEnd()) write("");
+  if (m_ready && m_schedule.atEnd()) write(m_schedule.nextFileSuffix());
   m_ready = false;
 }
 

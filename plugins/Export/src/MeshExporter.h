@@ -29,8 +29,9 @@ struct EnumKeywords<MeshExportFormat> {
 /// mechanical state, else of its topology; the element lists switched on) in a mesh format:
 /// vtkxml (.vtu), vtk (legacy ASCII .vtk), gmsh (.msh 2.2 ASCII), tetgen (.node + .ele,
 /// tetrahedra only: refused with an error when other cells are selected and present). Files:
-/// `filename` (its extension dropped) + ".ext" at begin and end, + "_STEP.ext" during the run
-/// (STEP: the steps done). When: ExportSchedule.h.
+/// `filename` (a known extension dropped) + the export's number on 5 digits from 00001 + ".ext"
+/// when exportEveryNumberOfSteps > 0 (as SOFA's: outFile00001.vtk), else `filename.ext`.
+/// When: ExportSchedule.h.
 class MeshExporter final : public Base, public StepListener {
  public:
   Data<FileName> d_filename{this,

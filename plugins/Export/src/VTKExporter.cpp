@@ -34,10 +34,8 @@ bool readNumbers(const std::string& text, std::vector<double>& values) {
   return true;
 }
 
-std::string outputBase(const std::string& filename) {
-  std::string base = stripExtension(filename, ".vtu").string();
-  return stripExtension(base, ".vtk").string();
-}
+/// SOFA's VTKExporter keeps the name as given: "example.vtk" gives example.vtk0.vtu, ...
+std::string outputBase(const std::string& filename) { return filename; }
 
 }  // namespace
 
@@ -135,9 +133,8 @@ void VTKExporter::write() {
   const bool xml = d_XMLformat.value();
   const std::string extension = xml ? ".vtu" : ".vtk";
   const std::string base = outputBase(d_filename.value().original);
-  const std::string file = d_overwrite.value()
-                               ? base + extension
-                               : base + "_" + std::to_string(m_written.size()) + extension;
+  const std::string file =
+      d_overwrite.value() ? base + extension : base + std::to_string(m_written.size()) + extension;
   const bool ok = xml ? vtk::writeVtu(file, mesh, error) : vtk::writeVtkLegacy(file, mesh, error);
   if (!ok) {
     msgError(error, "filename");

@@ -39,16 +39,15 @@ void VisualModelOBJExporter::init() {
 }
 
 void VisualModelOBJExporter::bwdInit() {
-  if (m_ready && m_schedule.atBegin()) write("");
+  if (m_ready && m_schedule.atBegin()) write(m_schedule.nextFileSuffix());
 }
 
 void VisualModelOBJExporter::stepEnd(double, double) {
-  if (m_ready && m_schedule.stepDone())
-    write(std::string("_").append(std::to_string(m_schedule.steps())));
+  if (m_ready && m_schedule.stepDone()) write(m_schedule.nextFileSuffix());
 }
 
 void VisualModelOBJExporter::cleanup() {
-  if (m_ready && m_schedule.atEnd()) write("");
+  if (m_ready && m_schedule.atEnd()) write(m_schedule.nextFileSuffix());
   m_ready = false;
 }
 

@@ -16,9 +16,10 @@ namespace stroma {
 /// under its node (VisualModel::surface(), after updateVisual(), as a renderer draws them) to
 /// one Wavefront OBJ file with a material library beside it: one object ("o") and one material
 /// per model, positions, texture coordinates and normals when the surface has them, triangles.
-/// Files: `filename` (an extension .obj dropped) + ".obj" and ".mtl" at begin and end,
-/// + "_STEP.obj"/".mtl" during the run. When: ExportSchedule.h. A scene without any visual
-/// surface writes an OBJ with no object, and says so once (a warning).
+/// Files: `filename` (an extension .obj dropped) + the export's number on 5 digits from 00001
+/// when exportEveryNumberOfSteps > 0 (as SOFA's exporters) + ".obj" and ".mtl". When:
+/// ExportSchedule.h. A scene without any visual surface writes an OBJ with no object, and says so
+/// once (a warning).
 class VisualModelOBJExporter final : public Base, public StepListener {
  public:
   Data<FileName> d_filename{this,

@@ -121,8 +121,10 @@ void writeNumbers(std::ostream& out, const Range& values, std::size_t perLine, c
   char number[32];
   std::size_t n = 0;
   for (const auto& v : values) {
-    if (n % perLine == 0) text += lead;
-    else text += ' ';
+    if (n % perLine == 0)
+      text += lead;
+    else
+      text += ' ';
     text.append(number, std::to_chars(number, number + sizeof number, v).ptr);
     if (++n % perLine == 0) text += '\n';
   }

@@ -228,11 +228,11 @@ TEST(VTKExporter, FilesReadBackThroughMeshio) {
                                "overwrite=\"1\" exportEveryNumberOfSteps=\"4\"/>")))
       << describe(s.scene.log());
   for (int k = 0; k < 4; ++k) ASSERT_TRUE(s.scene.step());
-  ASSERT_TRUE(fs::exists(base + "_0.vtu"));  // at begin
-  ASSERT_TRUE(fs::exists(base + "_1.vtu"));  // step 2
-  ASSERT_FALSE(fs::exists(base + "_3.vtu"));
+  ASSERT_TRUE(fs::exists(base + "0.vtu"));  // at begin (SOFA's names: filename + number)
+  ASSERT_TRUE(fs::exists(base + "1.vtu"));  // step 2
+  ASSERT_FALSE(fs::exists(base + "3.vtu"));
   const std::vector<Vec3d> x = s.positions(), v = s.velocities();
-  for (const std::string& name : {base + "_2.vtu", base + "-legacy.vtk"}) {
+  for (const std::string& name : {base + "2.vtu", base + "-legacy.vtk"}) {
     SCOPED_TRACE(name);
     const MeshioMesh read = readWithMeshio(name);
     ASSERT_EQ(read.points.size(), x.size());
@@ -243,7 +243,7 @@ TEST(VTKExporter, FilesReadBackThroughMeshio) {
     for (std::size_t e = 0; e < hexahedra.size(); ++e)
       for (int k = 0; k < 8; ++k) EXPECT_EQ(read.cells.at("hexahedron")[e][k], hexahedra[e][k]);
   }
-  const MeshioMesh read = readWithMeshio(base + "_2.vtu");
+  const MeshioMesh read = readWithMeshio(base + "2.vtu");
   const std::vector<double>& velocity = read.pointData.at("dofs.velocity");
   ASSERT_EQ(velocity.size(), 3 * v.size());
   for (std::size_t i = 0; i < v.size(); ++i)
@@ -293,6 +293,22 @@ TEST(MeshExporter, OutputReadsBackThroughStromasLoadersAndMeshio) {
     for (std::size_t i = 0; i < x.size(); ++i) EXPECT_EQ(read.points[i][1], x[i].y()) << extension;
     EXPECT_EQ(read.cells.at("hexahedron").size(), hexahedra.size()) << extension;
   }
+}
+
+TEST(MeshExporter, NumbersItsFilesAsSofas) {
+  // SOFA's MeshExporter.scn (exportEveryNumberOfSteps="5", 10 steps) writes outFile00001.vtk
+  // and outFile00002.vtk (runSofa): the export's number on 5 digits.
+  TempDir dir;
+  const std::string base = (dir.path() / "outFile").string();
+  SceneUnderTest s;
+  ASSERT_TRUE(s.load(beamScene("<MeshExporter filename=\"" + base +
+                               "\" format=\"vtk\" exportEveryNumberOfSteps=\"5\"/>")))
+      << describe(s.scene.log());
+  for (int k = 0; k < 10; ++k) ASSERT_TRUE(s.scene.step());
+  EXPECT_TRUE(fs::exists(base + "00001.vtk"));
+  EXPECT_TRUE(fs::exists(base + "00002.vtk"));
+  EXPECT_FALSE(fs::exists(base + "00003.vtk"));
+  EXPECT_FALSE(fs::exists(base + ".vtk"));
 }
 
 TEST(MeshExporter, TetgenFilesReadBackThroughMeshio) {
