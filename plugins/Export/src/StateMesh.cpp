@@ -49,17 +49,18 @@ bool appendCells(const Topology* topology, const CellSelection& selection, std::
     for (Index p = 0; p < pointCount; ++p) mesh.addCell(CellType::vertex, &p);
     return true;
   }
+  // SOFA's exporters' order: edges, triangles, quads, tetrahedra, hexahedra.
   const Topology& t = *topology;
-  return (!selection.hexahedra ||
-          appendList(t.hexahedra(), CellType::hexahedron, "hexahedron", pointCount, mesh, error)) &&
-         (!selection.tetrahedra ||
-          appendList(t.tetrahedra(), CellType::tetra, "tetrahedron", pointCount, mesh, error)) &&
-         (!selection.quads ||
-          appendList(t.quads(), CellType::quad, "quad", pointCount, mesh, error)) &&
+  return (!selection.edges ||
+          appendList(t.edges(), CellType::line, "edge", pointCount, mesh, error)) &&
          (!selection.triangles ||
           appendList(t.triangles(), CellType::triangle, "triangle", pointCount, mesh, error)) &&
-         (!selection.edges ||
-          appendList(t.edges(), CellType::line, "edge", pointCount, mesh, error));
+         (!selection.quads ||
+          appendList(t.quads(), CellType::quad, "quad", pointCount, mesh, error)) &&
+         (!selection.tetrahedra ||
+          appendList(t.tetrahedra(), CellType::tetra, "tetrahedron", pointCount, mesh, error)) &&
+         (!selection.hexahedra ||
+          appendList(t.hexahedra(), CellType::hexahedron, "hexahedron", pointCount, mesh, error));
 }
 
 std::vector<Vec3d> statePoints(const BaseMechanicalState& state) {

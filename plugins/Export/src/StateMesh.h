@@ -27,8 +27,8 @@ struct CellSelection {
 /// its triangles and quads, else its edges; nothing for an empty topology or none.
 CellSelection highestDimensionCells(const Topology* topology);
 
-/// Appends the selected elements of `topology` as cells (hexahedra, tetrahedra, quads,
-/// triangles, edges in that order). With nothing selected, or no topology, every point becomes
+/// Appends the selected elements of `topology` as cells (edges, triangles, quads, tetrahedra,
+/// hexahedra in that order, as SOFA's exporters). With nothing selected, or no topology, every point becomes
 /// a vertex cell. False with `error` when an element uses a point past `pointCount`.
 bool appendCells(const Topology* topology, const CellSelection& selection, std::size_t pointCount,
                  UnstructuredMesh& mesh, std::string& error);

@@ -109,7 +109,12 @@ void VTKExporter::write() {
                        const std::vector<std::string>& names, std::size_t items,
                        std::vector<vtk::FieldArray>& out, const char* field, const char* what) {
     for (std::size_t k = 0; k < fields.size(); ++k) {
-      vtk::FieldArray array{names[k], 1, {}};
+      // Named by the Data's name, as SOFA's ("position" for "mecha.position"), or by the
+      // whole entry when two entries share that name.
+      std::string arrayName = fields[k]->name();
+      for (std::size_t other = 0; other < fields.size(); ++other)
+        if (other != k && fields[other]->name() == arrayName) arrayName = names[k];
+      vtk::FieldArray array{arrayName, 1, {}};
       if (!readNumbers(fields[k]->valueText(), array.values) || items == 0 ||
           array.values.empty() || array.values.size() % items != 0) {
         msgError("'" + names[k] + "' has " + std::to_string(array.values.size()) +

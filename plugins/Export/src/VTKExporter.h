@@ -21,7 +21,8 @@ class BaseData;
 /// topology's. Cells: the element lists switched on (edges, triangles, quads, tetras, hexas);
 /// one vertex per point when none gives a cell. Fields: "object.field" names of Data in this
 /// node (pointsDataFields: one value or vector per point; cellsDataFields: per cell), their
-/// numbers split evenly over the points or cells. Files: `filename` as given + the file's number
+/// numbers split evenly over the points or cells, each array named by its Data's name (as
+/// SOFA's; the whole entry when two share a name). Files: `filename` as given + the file's number
 /// (0, 1, ...) + ".vtu" (XMLformat) or ".vtk", as SOFA's (filename="example.vtk" gives
 /// example.vtk0.vtu); `filename` + the extension, rewritten each time, with overwrite. When:
 /// exportEveryNumberOfSteps, exportAtBegin, exportAtEnd (ExportSchedule.h).

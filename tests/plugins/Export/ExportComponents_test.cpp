@@ -244,7 +244,7 @@ TEST(VTKExporter, FilesReadBackThroughMeshio) {
       for (int k = 0; k < 8; ++k) EXPECT_EQ(read.cells.at("hexahedron")[e][k], hexahedra[e][k]);
   }
   const MeshioMesh read = readWithMeshio(base + "2.vtu");
-  const std::vector<double>& velocity = read.pointData.at("dofs.velocity");
+  const std::vector<double>& velocity = read.pointData.at("velocity");
   ASSERT_EQ(velocity.size(), 3 * v.size());
   for (std::size_t i = 0; i < v.size(); ++i)
     for (int a = 0; a < 3; ++a) EXPECT_EQ(velocity[3 * i + a], v[i][a]);
