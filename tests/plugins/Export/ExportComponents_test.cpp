@@ -154,6 +154,31 @@ TEST(WriteState, WritesSofasFormatAtItsTimes) {
   EXPECT_EQ(values, (std::vector<double>{v8[44].x(), v8[44].y(), v8[44].z()}));
 }
 
+TEST(WriteState, WritesAfterTheStepsOfAnyAnimationLoop) {
+  // StepListener is called by the scene around whatever loop steps it: FreeMotionAnimationLoop
+  // (no constraint here) has its own step.
+  TempDir dir;
+  const fs::path file = dir.path() / "free.state";
+  std::string scene = beamScene("<WriteState filename=\"" + file.string() + "\" period=\"0.01\"/>");
+  scene.insert(scene.find("<Node name=\"Beam\">"),
+               "<FreeMotionAnimationLoop/>\n  <GenericConstraintSolver/>\n  ");
+  SceneUnderTest s;
+  ASSERT_TRUE(s.load(scene)) << describe(s.scene.log());
+  for (int k = 0; k < 5; ++k) ASSERT_TRUE(s.scene.step());
+  const std::vector<Vec3d> x = s.positions();
+  s.scene.unload();
+  SceneUnderTest replay;
+  ASSERT_TRUE(replay.load(replayScene("<ReadState filename=\"" + file.string() + "\"/>")))
+      << describe(replay.scene.log());
+  EXPECT_GT((x[44] - replay.positions()[44]).norm(), 1e-4) << "the beam did not fall";
+  for (int k = 0; k < 5; ++k) ASSERT_TRUE(replay.scene.step());
+  EXPECT_EQ(replay.positions(), x);
+  std::ifstream in(file);
+  int records = 0;
+  for (std::string line; std::getline(in, line);) records += line.starts_with("T= ");
+  EXPECT_EQ(records, 6);  // t = 0 to 0.05
+}
+
 /// The X= numbers of the record "T= time" of a SOFA state file, read by the test itself.
 std::vector<double> recordPositions(const fs::path& file, const std::string& time) {
   std::ifstream in(file);
