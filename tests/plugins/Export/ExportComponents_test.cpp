@@ -237,6 +237,24 @@ TEST(ReadState, ShiftScaleTranslationAndLoop) {
   EXPECT_NEAR(s.positions()[62].y(), 2 * expected[3 * 62 + 1], 1e-12);
 }
 
+TEST(ReadState, IntervalReadsOnlyThatOften) {
+  const fs::path file =
+      fs::path(STROMA_SOURCE_DIR) / "tests/plugins/Export/data/sofa-beam-writestate.txt";
+  SceneUnderTest s;
+  ASSERT_TRUE(s.load(
+      replayScene("<ReadState filename=\"" + file.string() + "\" interval=\"0.03\"/>",
+                  R"(nx="3" ny="3" nz="7" xmin="0" xmax="3" ymin="0" ymax="3" zmin="0" zmax="7")")))
+      << describe(s.scene.log());
+  // Read at t = 0 (the first step's begin), then not before t = 0.03.
+  const std::vector<double> atZero = recordPositions(file, "0"),
+                            atThree = recordPositions(file, "0.03");
+  ASSERT_NE(atZero[3 * 62 + 1], atThree[3 * 62 + 1]);
+  for (int k = 1; k <= 3; ++k) {
+    ASSERT_TRUE(s.scene.step());
+    EXPECT_EQ(s.positions()[62].y(), (k < 3 ? atZero : atThree)[3 * 62 + 1]) << "step " << k;
+  }
+}
+
 // --- VTKExporter and MeshExporter ------------------------------------------------------------
 
 TEST(VTKExporter, FilesReadBackThroughMeshio) {
