@@ -105,6 +105,28 @@ TEST(RenderCommand, WritesTheFirstFrameEveryKStepsAndTheLast) {
   EXPECT_NE(run.output.find("Rendered 4 frames of 64x48"), std::string::npos) << run.output;
 }
 
+TEST(RenderCommand, EveryBundledSceneDrawsSomething) {
+  // One step of each scene of scenes/ in a small picture: never a crash, never an empty
+  // picture (scenes without visual models get their FEM meshes or points).
+  std::size_t rendered = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(kSource / "scenes")) {
+    if (entry.path().extension() != ".scn") continue;
+    SCOPED_TRACE(entry.path().string());
+    if (runCli(kStroma, "check " + quoted(entry.path())).exitCode != 0) {
+      std::cout << "skipping " << entry.path() << ": it does not load in this build\n";
+      continue;
+    }
+    TempDir out;
+    const CliRun run =
+        render(quoted(entry.path()) + " -n 1 --size 32x24 --out " + quoted(out.path()));
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_EQ(run.output.find("nothing was drawn"), std::string::npos) << run.output;
+    EXPECT_TRUE(fs::exists(out.path() / "frame_00001.png")) << run.output;
+    ++rendered;
+  }
+  EXPECT_GE(rendered, 30u) << "the bundled scenes are found and load";
+}
+
 TEST(RenderCommand, HelpExitsZero) {
   const CliRun run = render("--help");
   EXPECT_EQ(run.exitCode, 0);
