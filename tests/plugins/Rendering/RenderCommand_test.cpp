@@ -127,6 +127,29 @@ TEST(RenderCommand, EveryBundledSceneDrawsSomething) {
   EXPECT_GE(rendered, 30u) << "the bundled scenes are found and load";
 }
 
+TEST(RenderCommand, AFailedStepEndsWithExitCodeOneAndThePictureOfTheFailedState) {
+  // TestCounter (tests/plugins/TestPlugin) fails the step it is told to.
+  TempDir dir;
+  const auto scene = dir.write("fails.scn", R"(<Node name="root" dt="0.1">
+      <VisualStyle displayFlags="showBehaviorModels"/>
+      <TestCounter name="counter" failAtStep="3"/>
+      <MechanicalObject name="dofs" position="0 0 0  1 2 3"/></Node>)");
+  const std::string command = "STROMA_PLUGIN_PATH=" + quoted(testPluginDirectory()) + " " +
+                              quoted(fs::path(kStroma)) + " render " + quoted(scene) +
+                              " -n 10 --every 2 --size 32x24 --out " + quoted(dir.path() / "f") +
+                              " > " + quoted(dir.path() / "log") + " 2>&1";
+  const int status = std::system(command.c_str());
+  std::ifstream in(dir.path() / "log");
+  const std::string log((std::istreambuf_iterator<char>(in)), {});
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1) << log;
+  EXPECT_NE(log.find("the simulation failed at step 3"), std::string::npos) << log;
+  // Frames of steps 0 and 2, then the failed step 3.
+  EXPECT_NE(log.find("frame 00002: step 3"), std::string::npos) << log;
+  EXPECT_TRUE(fs::exists(dir.path() / "f" / "frame_00002.png"));
+  EXPECT_FALSE(fs::exists(dir.path() / "f" / "frame_00003.png"));
+}
+
 TEST(RenderCommand, HelpExitsZero) {
   const CliRun run = render("--help");
   EXPECT_EQ(run.exitCode, 0);
