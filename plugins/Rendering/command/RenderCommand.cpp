@@ -181,12 +181,14 @@ int renderCommand(const std::vector<std::string>& args) {
 
   drawer.updateVisuals();
   Camera camera;
-  const double aspect = static_cast<double>(o.width) / o.height;
   std::string cameraWarning;
   if (o.eyeAndTarget) {
     camera.setEyeAndTarget(o.eyeAndTarget->first, o.eyeAndTarget->second);
   } else if (!camera.readSceneCamera(scene.root(), cameraWarning)) {
-    camera.fitBox(sceneBounds(scene.root()), aspect);
+    // Frame the scene in what the legend leaves.
+    const bool legend = o.colorMap != ColorMapKind::none && o.legend;
+    camera.fitBox(sceneBounds(scene.root()), o.width, o.height,
+                  legend ? legendWidth(o.colorMap, o.width, o.height) : 0);
   }
   if (!cameraWarning.empty()) std::cerr << "stroma: warning: camera:" << cameraWarning << "\n";
 

@@ -157,6 +157,14 @@ void Camera::fitBox(const Aabb& given, double aspect) {
   fitClipPlanes(box);
 }
 
+void Camera::fitBox(const Aabb& box, int width, int height, int rightMargin) {
+  if (width <= 0 || height <= 0) return fitBox(box, 1.0);
+  if (rightMargin <= 0 || rightMargin >= width / 2) return fitBox(box, double(width) / height);
+  fitBox(box, double(width - rightMargin) / height);
+  // Move the view right by half the margin: the box's centre goes left by as many pixels.
+  pan(0.5 * rightMargin / height, 0);
+}
+
 void Camera::fitClipPlanes(const Aabb& given) {
   const Aabb box = nonEmpty(given);
   const Vec3d eye = position(), f = forward();

@@ -26,27 +26,17 @@ void fillRect(double x0, double y0, double x1, double y1, const Vec4d& c) {
 
 LegendPlacement drawLegend(ColorMapKind kind, double min, double max, int width, int height) {
   LegendPlacement out;
-  out.scale = height >= 400 ? 2 : 1;
-  const int s = out.scale;
   out.minText = legendNumber(min);
   out.maxText = legendNumber(max);
-  std::string title = std::string(colorMapName(kind)) + " (" + colorMapUnit(kind) + ")";
-  // In a small picture the field's name would take a quarter of it: the unit alone then.
-  if (textWidth(title, out.scale) > width / 4) title = std::string("(") + colorMapUnit(kind) + ")";
-  // Upper case: the font's lower-case 'e' is for exponents only.
-  for (char& c : title) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-
-  const int margin = 8 * s, gap = 3 * s, barWidth = 10 * s;
-  const int barHeight = std::max(2 * height / 5, 4 * textHeight(s));
-  const int barRight = width - margin, barLeft = barRight - barWidth;
-  const int barTop = (height - barHeight) / 2 + textHeight(s), barBottom = barTop + barHeight;
-  const int numbersWidth = std::max(textWidth(out.minText, s), textWidth(out.maxText, s));
-  out.maxX = barLeft - gap - textWidth(out.maxText, s);
-  out.maxY = barTop;
-  out.minX = barLeft - gap - textWidth(out.minText, s);
-  out.minY = barBottom - textHeight(s);
-  const int titleX = barRight - textWidth(title, s), titleY = barTop - gap - textHeight(s);
-  const int panelLeft = std::min(barLeft - gap - numbersWidth, titleX) - gap;
+  const int chars = static_cast<int>(std::max(out.minText.size(), out.maxText.size()));
+  const LegendLayout l = layOutLegend(kind, chars, width, height);
+  const int s = out.scale = l.scale;
+  out.maxX = l.barLeft - l.gap - textWidth(out.maxText, s);
+  out.maxY = l.barTop;
+  out.minX = l.barLeft - l.gap - textWidth(out.minText, s);
+  out.minY = l.barBottom - textHeight(s);
+  const int barLeft = l.barLeft, barRight = l.barRight, barTop = l.barTop, barBottom = l.barBottom;
+  const int barHeight = barBottom - barTop;
 
   glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT);
   glDisable(GL_LIGHTING);
@@ -59,8 +49,7 @@ LegendPlacement drawLegend(ColorMapKind kind, double min, double max, int width,
   glMatrixMode(GL_MODELVIEW);
   glPushMatrix();
   glLoadIdentity();
-  fillRect(panelLeft, titleY - gap, width - margin + gap, barBottom + gap,
-           Vec4d(0.08, 0.08, 0.1, 1));
+  fillRect(l.panelLeft, l.panelTop, l.panelRight, l.panelBottom, Vec4d(0.08, 0.08, 0.1, 1));
   // The bar, min at the bottom, in strips whose ends take the ramp's colors.
   constexpr int kStrips = 32;
   glShadeModel(GL_SMOOTH);
@@ -81,7 +70,7 @@ LegendPlacement drawLegend(ColorMapKind kind, double min, double max, int width,
   glPopAttrib();
 
   const Vec4d white(1, 1, 1, 1);
-  drawText(title, titleX, titleY, s, white, width, height);
+  drawText(l.title, l.titleX, l.titleY, s, white, width, height);
   drawText(out.maxText, out.maxX, out.maxY, s, white, width, height);
   drawText(out.minText, out.minX, out.minY, s, white, width, height);
   return out;

@@ -16,6 +16,18 @@ struct LegendPlacement {
   int scale = 1;  ///< pixels per font pixel
 };
 
+/// Where everything of the legend goes (pixels, y downwards), for numbers of up to
+/// `numbersWidthInChars` characters.
+struct LegendLayout {
+  int scale, margin, gap;
+  std::string title;
+  int barLeft, barRight, barTop, barBottom;
+  int titleX, titleY;
+  int panelLeft, panelTop, panelRight, panelBottom;
+};
+
+LegendLayout layOutLegend(ColorMapKind kind, int numbersWidthInChars, int width, int height);
+
 /// Draws a dark panel with the field's name and unit, a vertical color bar (rampColor, min at
 /// the bottom) and the numbers min and max (legendNumber) beside its ends.
 LegendPlacement drawLegend(ColorMapKind kind, double min, double max, int width, int height);

@@ -2,6 +2,7 @@
 // The camera's geometry: a fitted view holds the whole box, projection and unprojection are
 // inverse, orbit/pan/zoom move what they say, and a scene's InteractiveCamera is read by name.
 #include "stroma/rendering/Camera.h"
+#include "stroma/rendering/SceneDrawer.h"
 
 #include <gtest/gtest.h>
 
@@ -52,6 +53,31 @@ TEST(RenderingCamera, FitPutsEveryCornerOfTheBoxInView) {
     }
     // Fitted, not merely inside: some corner is within 10 % of the picture of an edge.
     EXPECT_LT(nearestToAnEdge, 0.1 * std::min(c.width, c.height));
+  }
+}
+
+TEST(RenderingCamera, FitBesideALegendKeepsTheBoxOutOfTheMargin) {
+  const Aabb box{Vec3d(0, -0.05, -0.05), Vec3d(0.4, 0.05, 0.05)};
+  const int width = 480, height = 360;
+  const int margin = legendWidth(ColorMapKind::displacement, width, height);
+  EXPECT_GT(margin, 40);
+  EXPECT_LT(margin, width / 3);
+  for (Projection projection : {Projection::perspective, Projection::orthographic}) {
+    Camera camera;
+    camera.projection = projection;
+    camera.fitBox(box, width, height, margin);
+    double left = 1e300, right = -1e300;
+    for (int i = 0; i < 8; ++i) {
+      const Vec3d corner(i & 1 ? box.max.x() : box.min.x(), i & 2 ? box.max.y() : box.min.y(),
+                         i & 4 ? box.max.z() : box.min.z());
+      const PixelPoint p = camera.project(corner, width, height);
+      left = std::min(left, p.x);
+      right = std::max(right, p.x);
+    }
+    EXPECT_GE(left, 0.0);
+    EXPECT_LE(right, width - margin) << "nothing under the legend";
+    // Centred in what is left, up to the perspective's asymmetry.
+    EXPECT_NEAR(0.5 * (left + right), 0.5 * (width - margin), 0.05 * width);
   }
 }
 

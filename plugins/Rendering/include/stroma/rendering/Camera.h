@@ -71,6 +71,10 @@ class Camera {
   /// lookAt at its centre, distance such that its bounding sphere fills the narrower field,
   /// near and far planes around it. An empty box gives a unit box at the origin.
   void fitBox(const Aabb& box, double aspect);
+  /// The same in a width x height picture whose right `rightMargin` pixels are taken (a
+  /// legend): the box is fitted in the rest, its centre in the middle of it. A margin of half
+  /// the picture or more is ignored.
+  void fitBox(const Aabb& box, int width, int height, int rightMargin);
   /// Near and far planes around `box` as seen from where the camera is (so that an orbit or
   /// a zoom never clips the scene).
   void fitClipPlanes(const Aabb& box);

@@ -51,6 +51,10 @@ struct FrameReport {
   std::size_t drawn() const { return triangles + lines + points; }
 };
 
+/// The width in pixels that the legend of `kind` takes at the right edge of a width x height
+/// picture (numbers of up to 9 characters), for a caller that frames the scene beside it.
+int legendWidth(ColorMapKind kind, int width, int height);
+
 /// Draws one scene. Keeps what it learns between frames (textures uploaded, warnings given
 /// once) and nothing that a step changes: every draw() reads the scene afresh.
 class SceneDrawer {
