@@ -122,6 +122,45 @@ class FrameWriter {
   bool m_warnedEmpty = false;
 };
 
+/// The view: --camera, else the scene's InteractiveCamera, else the whole scene at step 0 (in
+/// the part of the picture a legend leaves).
+Camera chooseCamera(const RenderOptions& o, const Scene& scene) {
+  Camera camera;
+  std::string warning;
+  if (o.eyeAndTarget) {
+    camera.setEyeAndTarget(o.eyeAndTarget->first, o.eyeAndTarget->second);
+  } else if (!camera.readSceneCamera(scene.root(), warning)) {
+    const bool legend = o.colorMap != ColorMapKind::none && o.legend;
+    camera.fitBox(sceneBounds(scene.root()), o.width, o.height,
+                  legend ? legendWidth(o.colorMap, o.width, o.height) : 0);
+  }
+  if (!warning.empty()) std::cerr << "stroma: warning: camera:" << warning << "\n";
+  return camera;
+}
+
+/// A scene without VisualStyle and without a visual surface (most simulation scenes) would
+/// give empty pictures: draw its FEM meshes, else its points, and say so.
+void showSomething(SceneDrawer& drawer, const Camera& camera, const RenderOptions& o,
+                   const DisplayFlags& sceneFlags) {
+  drawer.draw(camera, o.width, o.height);
+  if (drawer.lastFrame().drawn() > 0) return;
+  DrawOptions options = drawer.options();
+  DisplayFlags fallback = sceneFlags;
+  fallback.forceFields = true;
+  options.flags = fallback;
+  drawer.setOptions(options);
+  drawer.draw(camera, o.width, o.height);
+  const char* shown = "showForceFields";
+  if (drawer.lastFrame().drawn() == 0) {
+    fallback.behaviorModels = true;
+    options.flags = fallback;
+    drawer.setOptions(options);
+    shown = "showBehaviorModels";
+  }
+  std::cerr << "stroma: note: the scene has no visual surface and no VisualStyle: drawing "
+            << "with displayFlags=\"" << shown << "\" (--show WORDS chooses)\n";
+}
+
 int renderCommand(const std::vector<std::string>& args) {
   cli::Arguments a;
   std::string error;
@@ -180,39 +219,9 @@ int renderCommand(const std::vector<std::string>& args) {
   }
 
   drawer.updateVisuals();
-  Camera camera;
-  std::string cameraWarning;
-  if (o.eyeAndTarget) {
-    camera.setEyeAndTarget(o.eyeAndTarget->first, o.eyeAndTarget->second);
-  } else if (!camera.readSceneCamera(scene.root(), cameraWarning)) {
-    // Frame the scene in what the legend leaves.
-    const bool legend = o.colorMap != ColorMapKind::none && o.legend;
-    camera.fitBox(sceneBounds(scene.root()), o.width, o.height,
-                  legend ? legendWidth(o.colorMap, o.width, o.height) : 0);
-  }
-  if (!cameraWarning.empty()) std::cerr << "stroma: warning: camera:" << cameraWarning << "\n";
-
-  if (!drawOptions.flags && !hasVisualStyle(scene.root())) {
-    // A scene without VisualStyle and without a visual surface (most simulation scenes)
-    // would give empty pictures: draw its FEM meshes, else its points, and say so.
-    drawer.draw(camera, o.width, o.height);
-    if (drawer.lastFrame().drawn() == 0) {
-      DisplayFlags fallback = sceneFlags;
-      fallback.forceFields = true;
-      drawOptions.flags = fallback;
-      drawer.setOptions(drawOptions);
-      drawer.draw(camera, o.width, o.height);
-      const char* shown = "showForceFields";
-      if (drawer.lastFrame().drawn() == 0) {
-        fallback.behaviorModels = true;
-        drawOptions.flags = fallback;
-        drawer.setOptions(drawOptions);
-        shown = "showBehaviorModels";
-      }
-      std::cerr << "stroma: note: the scene has no visual surface and no VisualStyle: drawing "
-                << "with displayFlags=\"" << shown << "\" (--show WORDS chooses)\n";
-    }
-  }
+  Camera camera = chooseCamera(o, scene);
+  if (!drawOptions.flags && !hasVisualStyle(scene.root()))
+    showSomething(drawer, camera, o, sceneFlags);
 
   std::unique_ptr<VideoPipe> video;
   if (!o.video.empty()) {
@@ -243,6 +252,12 @@ int renderCommand(const std::vector<std::string>& args) {
     }
     if ((step % every == 0 || step == o.steps) && !frames.write(step))
       code = cli::kSimulationFailure;
+  }
+  if (code == cli::kSuccess && scene.log().runFailureCount() > 0) {
+    // onDivergence="warn" let a diverged state go on: the run is still not a success.
+    std::cerr << "stroma: the run went on after its state diverged (onDivergence=\"warn\"); "
+                 "see the warnings above\n";
+    code = cli::kSimulationFailure;
   }
   if (video && !video->close(error)) {
     std::cerr << "stroma: --video " << o.video << ": " << error << "\n";
