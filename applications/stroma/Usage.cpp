@@ -67,12 +67,16 @@ const CommandHelp kCommands[] = {
       --color-map displacement|vonmises
                                     color the bodies by |x - x_rest| (m) or von Mises stress
                                     (Pa), with a legend; --no-legend leaves it out
+      --show WORDS                  VisualStyle displayFlags words over the scene's, e.g.
+                                    "showBehavior showWireframe" (a scene without VisualStyle
+                                    nor visual model gets showForceFields)
       --video FILE.mp4              also pipe the frames to ffmpeg (must be on PATH; PNG files
                                     then only with --out)
       --dt DT, --threads N          as for run
-    Exit codes: 0 frames written (a frame with nothing drawn is a warning), 1 a step failed or
-    a frame could not be written, 2 bad input (options, scene, output folder, size, color map
-    with nothing to color, ffmpeg missing), all refused before the first step.
+    Exit codes: 0 frames written (a frame with nothing drawn is a warning), 1 a step failed,
+    the state diverged, or a frame could not be written, 2 bad input (options, scene, output
+    folder, size, color map with nothing to color, ffmpeg missing), all refused before the
+    first step.
 )", true},
     {"view", R"(  stroma view SCENE [options]       show a scene in a window and run it interactively
       --size WxH                    window size in pixels (default 1280x720)
