@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <future>
 #include <iostream>
 #include <memory>
 
@@ -82,19 +83,23 @@ class FrameWriter {
                    "background only (--show showBehavior draws the states)\n";
     }
     const auto saveStart = Clock::now();
-    std::string where;
-    if (m_o.outputDirGiven || !m_video) {
-      const auto file = m_o.outputDir / frameFileName(m_frame);
-      std::string error;
-      if (!writePng(file, m_image, error)) {
-        std::cerr << "stroma: cannot write " << file.string() << ": " << error << "\n";
-        return false;
-      }
-      where = " -> " + file.string();
-    }
     if (m_video && !m_video->write(m_image)) {
       std::cerr << "stroma: ffmpeg stopped reading frames (see its messages above)\n";
       return false;
+    }
+    std::string where;
+    if (m_o.outputDirGiven || !m_video) {
+      // The PNG file is compressed on another thread while the next steps run; one file at a
+      // time, so that a failure stops the run at the next frame.
+      if (!finish()) return false;
+      const auto file = m_o.outputDir / frameFileName(m_frame);
+      std::swap(m_image, m_writing);
+      m_pending = std::async(std::launch::async, [file, this] {
+        std::string error;
+        return writePng(file, m_writing, error) ? std::string()
+                                                : "cannot write " + file.string() + ": " + error;
+      });
+      where = " -> " + file.string();
     }
     saveSeconds += secondsSince(saveStart);
     std::printf("frame %05lld: step %lld, time %g s%s", m_frame, step, m_scene.root().time(),
@@ -107,7 +112,17 @@ class FrameWriter {
     return true;
   }
 
+  /// Waits for the PNG file being written. False (after saying why) when it failed.
+  bool finish() {
+    if (!m_pending.valid()) return true;
+    const std::string error = m_pending.get();
+    if (error.empty()) return true;
+    std::cerr << "stroma: " << error << "\n";
+    return false;
+  }
+
   long long frames() const { return m_frame; }
+  /// Time spent drawing and reading back; waiting for PNG files and sending video frames.
   double drawSeconds = 0, saveSeconds = 0;
 
  private:
@@ -118,6 +133,8 @@ class FrameWriter {
   Scene& m_scene;
   VideoPipe* m_video;
   Image m_image;
+  Image m_writing;  ///< the frame whose PNG file m_pending writes
+  std::future<std::string> m_pending;
   long long m_frame = 0;
   bool m_warnedEmpty = false;
 };
@@ -253,6 +270,9 @@ int renderCommand(const std::vector<std::string>& args) {
     if ((step % every == 0 || step == o.steps) && !frames.write(step))
       code = cli::kSimulationFailure;
   }
+  const auto lastFileStart = Clock::now();
+  if (!frames.finish()) code = cli::kSimulationFailure;
+  frames.saveSeconds += secondsSince(lastFileStart);
   if (code == cli::kSuccess && scene.log().runFailureCount() > 0) {
     // onDivergence="warn" let a diverged state go on: the run is still not a success.
     std::cerr << "stroma: the run went on after its state diverged (onDivergence=\"warn\"); "
@@ -267,7 +287,7 @@ int renderCommand(const std::vector<std::string>& args) {
   const double total = secondsSince(start);
   std::printf(
       "Rendered %lld frames of %dx%d with %s in %.3f s (%.1f frames/s): drawing %.3f s "
-      "(%.1f frames/s), writing %.3f s, stepping %.3f s\n",
+      "(%.1f frames/s), waiting for files %.3f s, stepping %.3f s\n",
       frames.frames(), o.width, o.height, context.renderer().c_str(), total,
       total > 0 ? static_cast<double>(frames.frames()) / total : 0.0, frames.drawSeconds,
       frames.drawSeconds > 0 ? static_cast<double>(frames.frames()) / frames.drawSeconds : 0.0,

@@ -150,6 +150,20 @@ TEST(RenderCommand, AFailedStepEndsWithExitCodeOneAndThePictureOfTheFailedState)
   EXPECT_FALSE(fs::exists(dir.path() / "f" / "frame_00003.png"));
 }
 
+TEST(RenderCommand, AFrameThatCannotBeWrittenEndsTheRunWithExitCodeOne) {
+  // A folder where the second frame's file should go (files are written on another thread
+  // while the scene steps on: the failure is found at the next frame or at the end).
+  TempDir out;
+  fs::create_directories(out.path() / "frame_00001.png");
+  const CliRun run = render(quoted(kSource / "scenes/organ/Organ.scn") +
+                            " -n 3 --every 1 --size 32x24 --out " + quoted(out.path()));
+  EXPECT_EQ(run.exitCode, 1) << run.output;
+  EXPECT_NE(run.output.find("cannot write " + (out.path() / "frame_00001.png").string()),
+            std::string::npos)
+      << run.output;
+  EXPECT_TRUE(fs::exists(out.path() / "frame_00000.png"));
+}
+
 TEST(RenderCommand, HelpExitsZero) {
   const CliRun run = render("--help");
   EXPECT_EQ(run.exitCode, 0);
