@@ -11,6 +11,7 @@
 #include "GlPrimitives.h"
 #include "Legend.h"
 #include "Lights.h"
+#include "SceneDecorations.h"
 #include "SceneReading.h"
 #include "Textures.h"
 #include "collision/CollisionModel.h"
@@ -196,6 +197,7 @@ void SceneDrawer::draw(const Camera& camera, int width, int height) {
   if (any.forceFields) drawElementMeshes(coloredNodes);
   if (any.behaviorModels) drawStates();
   if (any.collisionModels) drawCollisionModels();
+  drawDecorations(background, width, height);
 
   if (m_report.colorMapped && m_options.legend) {
     const LegendPlacement placed =
@@ -213,6 +215,17 @@ void SceneDrawer::draw(const Camera& camera, int width, int height) {
   glLoadMatrixd(camera.projectionMatrix(aspect).data());
   glMatrixMode(GL_MODELVIEW);
   glLoadMatrixd(camera.viewMatrix().data());
+}
+
+void SceneDrawer::drawDecorations(const Vec4d& background, int width, int height) {
+  // Grids and axes are drawn with the visual models; labels over everything, before the legend.
+  std::vector<const Base*> labels;
+  forEachObject(m_root, [&](Base& object) {
+    if (!flagsAt(object.node()).visualModels) return;
+    m_report.lines += drawWorldDecoration(object);
+    if (object.className() == "OglLabel") labels.push_back(&object);
+  });
+  for (const Base* label : labels) drawScreenLabel(*label, background, width, height);
 }
 
 void SceneDrawer::drawColoredBodies() {

@@ -226,6 +226,26 @@ TEST(RenderingSceneDrawer, AVisualStyleAppliesToItsSubtree) {
   EXPECT_EQ(f.drawer->lastFrame().points, 6u);
 }
 
+TEST(RenderingSceneDrawer, GridsAxesAndLabelsOfTheScene) {
+  Fixture f;
+  std::string why;
+  ASSERT_TRUE(f.load(R"(<Node name="root">
+      <VisualGrid size="2" nbSubdiv="4" plane="y"/>
+      <LineAxis size="1" axis="xz"/>
+      <OglLabel label="STEP 12" prefix="" x="5" y="6" fontsize="14"/>
+      <MechanicalObject position="-1 0 -1  1 0 1"/>
+    </Node>)", why)) << why;
+  f.camera.setEyeAndTarget(Vec3d(0, 3, 2), Vec3d::Zero());
+  const Image image = f.draw();
+  // 5 lines each way, and two axes.
+  EXPECT_EQ(f.drawer->lastFrame().lines, 12u);
+  // The label, in our font at twice its size (14 pixels / 7), white on the dark background.
+  EXPECT_EQ(test::readText(image, 5, 6, 2, 7), "STEP 12");
+  // Not with the visual models hidden.
+  f.draw(showing("hideVisual"));
+  EXPECT_EQ(f.drawer->lastFrame().lines, 0u);
+}
+
 TEST(RenderingSceneDrawer, SceneLightsReplaceTheHeadlight) {
   // The beam's face towards the camera (+x) lit by a light going along -x (from the camera's
   // side) is bright; lit from behind it is dark.

@@ -100,6 +100,7 @@ class SceneDrawer {
   void drawElementMeshes(const std::set<const Node*>& skipped);
   void drawStates();
   void drawCollisionModels();
+  void drawDecorations(const Vec4d& background, int width, int height);
 
   struct Impl;
   Node& m_root;
