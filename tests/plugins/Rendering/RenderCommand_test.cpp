@@ -164,6 +164,27 @@ TEST(RenderCommand, AFrameThatCannotBeWrittenEndsTheRunWithExitCodeOne) {
   EXPECT_TRUE(fs::exists(out.path() / "frame_00000.png"));
 }
 
+TEST(RenderCommand, VonMisesColorsOfTheOrgan) {
+  // TetrahedronFEMForceField is a StressField (plugins/SolidMechanics/src/CorotationalStress.h).
+  TempDir out;
+  const CliRun run = render(quoted(kSource / "scenes/organ/Organ.scn") +
+                            " -n 5 --size 64x48 --color-map vonmises --out " + quoted(out.path()));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  // "frame 00001: step 5, time 0.05 s -> ..., von Mises stress MIN to MAX Pa"
+  const std::size_t at = run.output.find("frame 00001: step 5");
+  ASSERT_NE(at, std::string::npos) << run.output;
+  const std::size_t field = run.output.find("von Mises stress ", at);
+  ASSERT_NE(field, std::string::npos) << run.output;
+  std::istringstream in(run.output.substr(field + std::string("von Mises stress ").size()));
+  double min = -1, max = -1;
+  std::string to, unit;
+  in >> min >> to >> max >> unit;
+  EXPECT_EQ(to, "to");
+  EXPECT_EQ(unit, "Pa");
+  EXPECT_GE(min, 0.0);
+  EXPECT_GT(max, min) << "the hanging organ is stressed unevenly";
+}
+
 TEST(RenderCommand, HelpExitsZero) {
   const CliRun run = render("--help");
   EXPECT_EQ(run.exitCode, 0);
