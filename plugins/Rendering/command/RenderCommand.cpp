@@ -68,9 +68,23 @@ class FrameWriter {
         m_scene(scene),
         m_video(video) {}
 
+  /// Makes the camera, fitted to the scene at step 0, widen its view whenever a body leaves
+  /// the box seen so far (a hanging or falling body stays in the picture; the view never
+  /// narrows, so a film does not pump). `legendMargin`: the pixels a legend takes.
+  void followBodies(const Aabb& seen, int legendMargin) {
+    m_follow = true;
+    m_seen = seen;
+    m_legendMargin = legendMargin;
+  }
+
   bool write(long long step) {
     const auto drawStart = Clock::now();
-    m_camera.fitClipPlanes(sceneBounds(m_scene.root()));
+    const Aabb box = sceneBounds(m_scene.root());
+    if (m_follow && !box.empty() && !(m_seen.contains(box.min) && m_seen.contains(box.max))) {
+      m_seen.merge(box);
+      m_camera.fitBox(m_seen, m_o.width, m_o.height, m_legendMargin);
+    }
+    m_camera.fitClipPlanes(box);
     m_drawer.draw(m_camera, m_o.width, m_o.height);
     m_context.readPixels(m_image);
     drawSeconds += secondsSince(drawStart);
@@ -137,19 +151,27 @@ class FrameWriter {
   std::future<std::string> m_pending;
   long long m_frame = 0;
   bool m_warnedEmpty = false;
+  bool m_follow = false;
+  Aabb m_seen;
+  int m_legendMargin = 0;
 };
 
+int legendMargin(const RenderOptions& o) {
+  const bool legend = o.colorMap != ColorMapKind::none && o.legend;
+  return legend ? legendWidth(o.colorMap, o.width, o.height) : 0;
+}
+
 /// The view: --camera, else the scene's InteractiveCamera, else the whole scene at step 0 (in
-/// the part of the picture a legend leaves).
-Camera chooseCamera(const RenderOptions& o, const Scene& scene) {
+/// the part of the picture a legend leaves), widened later as bodies move (`fitted`).
+Camera chooseCamera(const RenderOptions& o, const Scene& scene, bool& fitted) {
   Camera camera;
   std::string warning;
+  fitted = false;
   if (o.eyeAndTarget) {
     camera.setEyeAndTarget(o.eyeAndTarget->first, o.eyeAndTarget->second);
   } else if (!camera.readSceneCamera(scene.root(), warning)) {
-    const bool legend = o.colorMap != ColorMapKind::none && o.legend;
-    camera.fitBox(sceneBounds(scene.root()), o.width, o.height,
-                  legend ? legendWidth(o.colorMap, o.width, o.height) : 0);
+    camera.fitBox(sceneBounds(scene.root()), o.width, o.height, legendMargin(o));
+    fitted = true;
   }
   if (!warning.empty()) std::cerr << "stroma: warning: camera:" << warning << "\n";
   return camera;
@@ -236,7 +258,8 @@ int renderCommand(const std::vector<std::string>& args) {
   }
 
   drawer.updateVisuals();
-  Camera camera = chooseCamera(o, scene);
+  bool fittedCamera = false;
+  Camera camera = chooseCamera(o, scene, fittedCamera);
   if (!drawOptions.flags && !hasVisualStyle(scene.root()))
     showSomething(drawer, camera, o, sceneFlags);
 
@@ -251,6 +274,7 @@ int renderCommand(const std::vector<std::string>& args) {
 
   const long long every = o.every > 0 ? o.every : std::max<long long>(o.steps, 1);
   FrameWriter frames(o, context, drawer, camera, scene, video.get());
+  if (fittedCamera) frames.followBodies(sceneBounds(scene.root()), legendMargin(o));
   int code = cli::kSuccess;
   const auto start = Clock::now();
   double stepSeconds = 0;
