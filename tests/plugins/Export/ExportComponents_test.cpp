@@ -419,6 +419,9 @@ struct BadInput {
   const char* needle;     // a piece of its text
 };
 
+// ctest lists the case by name, not as a byte dump of the struct.
+void PrintTo(const BadInput& c, std::ostream* out) { *out << c.name; }
+
 class ExportComponentBadInput : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(ExportComponentBadInput, IsRefusedWithAMessageNamingTheField) {

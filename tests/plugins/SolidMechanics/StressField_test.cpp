@@ -30,6 +30,9 @@ std::string describe(const StressCase& c) {
   return std::string(c.component) + "_" + c.elements + "_" + c.method;
 }
 
+// ctest lists the case by its description, not as a byte dump of the struct.
+void PrintTo(const StressCase& c, std::ostream* out) { *out << describe(c); }
+
 /// A box of 2 x 1 x 1 cells of size 2 x 1 x 1 with the case's force field.
 class StressScene {
  public:

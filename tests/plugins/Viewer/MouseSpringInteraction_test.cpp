@@ -38,6 +38,9 @@ struct SolverCase {
   int steps;
 };
 
+// ctest lists the case by name, not as a byte dump of the struct.
+void PrintTo(const SolverCase& c, std::ostream* out) { *out << c.name; }
+
 class MouseSpringOnAMappedState : public ::testing::TestWithParam<SolverCase> {};
 
 // Whatever the solver (matrix-free, assembled, explicit), the spring on the mapped state pulls
