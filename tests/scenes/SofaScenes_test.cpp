@@ -10,6 +10,8 @@
 #include <fstream>
 #include <map>
 
+#include <unistd.h>
+
 #include "core/Runtime.h"
 #include "plugins/TestPlugin/TestSupport.h"
 #include "simulation/Scene.h"
@@ -181,8 +183,23 @@ class SofaScenes : public ::testing::Test {
                    << " (the shared test data lives beside the clone)";
     runtime.addDataDirectory(kSofaDir / "share");
     runtime.addDataDirectory(kSofaDir / "examples");
+    // Exporters in SOFA's scenes (VTKExporter, WriteState) write at load into the current
+    // folder: a folder of the test's own, not the clone.
+    m_before = fs::current_path();
+    m_folder = fs::temp_directory_path() / ("stroma-sofa-scenes-" + std::to_string(::getpid()));
+    fs::create_directories(m_folder);
+    fs::current_path(m_folder);
+  }
+  void TearDown() override {
+    if (m_folder.empty()) return;
+    fs::current_path(m_before);
+    std::error_code ignored;
+    fs::remove_all(m_folder, ignored);
   }
   Runtime runtime;
+
+ private:
+  fs::path m_before, m_folder;
 };
 
 TEST_F(SofaScenes, LoadOrFailOnlyOnComponentsStromaLacks) {
