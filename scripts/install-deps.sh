@@ -19,6 +19,8 @@ packages=(
   libglfw3-dev   # the interactive viewer (stroma view, Viewer plugin)
   xvfb xauth   # a virtual display for the viewer's tests
   python3-meshio   # an independent reader of the exported VTU files, in their test
+  libassimp-dev   # meshes of every format (MeshAssimpLoader, MeshAssimp plugin)
+  liburdfdom-dev   # robots from URDF files (URDFLoader, URDF plugin)
 )
 
 missing=()
