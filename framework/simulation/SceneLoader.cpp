@@ -9,6 +9,7 @@
 #include "core/NameSuggestions.h"
 #include "core/PathResolver.h"
 #include "core/Runtime.h"
+#include "simulation/SceneGenerator.h"
 #include "simulation/Visitor.h"
 
 namespace stroma {
@@ -112,6 +113,30 @@ class GraphBuilder {
     added.setName(givenName ? *givenName : uniqueName(node, displayName, &added));
     setAttributes(added, e);
     if (givenName) renameDuplicate(node, added, *givenName, "objects");
+    if (auto* generator = dynamic_cast<SceneGenerator*>(&added)) addGenerated(node, *generator, e);
+  }
+
+  // The elements a SceneGenerator writes, built in its node after it; messages about them point
+  // to the generator's element.
+  void addGenerated(Node& node, SceneGenerator& generator, const SceneElement& e) {
+    SceneElement generated;
+    generated.tag = "Node";
+    if (!generator.generateScene(generated)) return;
+    setLocation(generated, e.where);
+    for (const SceneElement& child : generated.children) {
+      if (child.tag == "Node" || child.tag == "node") {
+        Node& sub = node.createChild("node");
+        fillNode(sub, child);
+        if (child.attribute("name")) renameDuplicate(node, sub, sub.name(), "child nodes");
+      } else {
+        addComponent(node, child);
+      }
+    }
+  }
+
+  static void setLocation(SceneElement& element, const SourceLocation& where) {
+    if (element.where.file.empty()) element.where = where;
+    for (SceneElement& child : element.children) setLocation(child, where);
   }
 
   // A name already given to a sibling of the same kind (SOFA warns and renames): `later` gets

@@ -1,0 +1,380 @@
+// SPDX-License-Identifier: MIT
+#include "URDFLoader.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#include <console_bridge/console.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include <Eigen/Eigenvalues>
+
+#include "KinematicTree.h"
+
+namespace stroma {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// urdfdom reports through console_bridge: its errors are collected for our message instead of
+// going to the console. (console_bridge's handler is process-wide: scenes load one at a time.)
+class CollectedMessages final : public console_bridge::OutputHandler {
+ public:
+  CollectedMessages() { console_bridge::useOutputHandler(this); }
+  ~CollectedMessages() override { console_bridge::restorePreviousOutputHandler(); }
+  void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_WARN) texts.push_back(text);
+  }
+  std::vector<std::string> texts;
+};
+
+std::string number(double v) {
+  std::ostringstream out;
+  out.precision(17);
+  out << v;
+  return out.str();
+}
+
+std::string vec3(const Vec3d& v) { return number(v.x()) + " " + number(v.y()) + " " + number(v.z()); }
+
+Vec3d toVec(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
+
+RigidCoord3 toFrame(const urdf::Pose& p) {
+  RigidCoord3 f;
+  f.center = toVec(p.position);
+  f.orientation = Quat(p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z).normalized();
+  return f;
+}
+
+std::string frameText(const RigidCoord3& f) {
+  const Quat& q = f.orientation;
+  return vec3(f.center) + " " + number(q.x()) + " " + number(q.y()) + " " + number(q.z()) + " " +
+         number(q.w());
+}
+
+SceneElement element(std::string tag, std::vector<SceneAttribute> attributes) {
+  SceneElement e;
+  e.tag = std::move(tag);
+  e.attributes = std::move(attributes);
+  return e;
+}
+
+template <class T, class F>
+std::string joined(const std::vector<T>& values, F&& text) {
+  std::string out;
+  for (const T& v : values) {
+    if (!out.empty()) out += "  ";
+    out += text(v);
+  }
+  return out;
+}
+
+// The file a URDF mesh names: file://, package://, relative to the URDF's folder.
+fs::path findMesh(const std::string& name, const fs::path& urdfDir) {
+  std::error_code ec;
+  std::string path = name;
+  if (path.rfind("file://", 0) == 0) path = path.substr(7);
+  std::vector<fs::path> candidates;
+  if (path.rfind("package://", 0) == 0) {
+    const std::string rest = path.substr(10);  // package/inside
+    const auto slash = rest.find('/');
+    const std::string inside = slash == std::string::npos ? rest : rest.substr(slash + 1);
+    for (fs::path dir = urdfDir; !dir.empty(); dir = dir.parent_path()) {
+      candidates.push_back(dir / inside);
+      candidates.push_back(dir / rest);
+      if (dir == dir.parent_path()) break;
+    }
+  } else {
+    candidates.push_back(fs::path(path).is_absolute() ? fs::path(path) : urdfDir / path);
+  }
+  for (const fs::path& c : candidates)
+    if (fs::is_regular_file(c, ec)) return fs::absolute(c, ec);
+  return {};
+}
+
+std::string meshLoaderFor(const fs::path& file) {
+  std::string ext = file.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".obj") return "MeshOBJLoader";
+  if (ext == ".stl") return "MeshSTLLoader";
+  return "MeshAssimpLoader";
+}
+
+// One link of the tree being numbered, with the joint from its parent.
+struct TreeLink {
+  urdf::LinkConstSharedPtr link;   // null for the virtual links of a floating joint
+  std::string jointName;
+  KinematicJoint joint;
+  const urdf::Joint* urdfJoint = nullptr;
+};
+
+// The six joints of a floating joint: x, y, z translations, then rotations about z, y, x.
+void addFloatingJoints(std::vector<TreeLink>& links, int parent, const RigidCoord3& origin,
+                       const std::string& name) {
+  const char* names[] = {"_x", "_y", "_z", "_yaw", "_pitch", "_roll"};
+  const Vec3d axes[] = {Vec3d::UnitX(), Vec3d::UnitY(), Vec3d::UnitZ(),
+                        Vec3d::UnitZ(), Vec3d::UnitY(), Vec3d::UnitX()};
+  for (int k = 0; k < 6; ++k) {
+    TreeLink t;
+    t.jointName = name + names[k];
+    t.joint.parent = parent;
+    t.joint.origin = k == 0 ? origin : RigidCoord3{};
+    t.joint.axis = axes[k];
+    t.joint.type = k < 3 ? JointType::prismatic : JointType::revolute;
+    parent = static_cast<int>(links.size());
+    links.push_back(std::move(t));
+  }
+}
+
+}  // namespace
+
+bool URDFLoader::generateScene(SceneElement& node) {
+  const fs::path file = d_filename.value().path();
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    msgError("cannot open '" + file.string() + "'", "filename");
+    return false;
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  urdf::ModelInterfaceSharedPtr model;
+  std::string reasons;
+  {
+    CollectedMessages messages;
+    try {
+      model = urdf::parseURDF(text.str());
+    } catch (const std::exception& e) {
+      messages.texts.push_back(e.what());
+    }
+    for (const std::string& t : messages.texts) reasons += (reasons.empty() ? "" : "; ") + t;
+  }
+  if (!model) {
+    msgError("'" + file.string() + "' is not a valid URDF robot: " +
+                 (reasons.empty() ? std::string("urdfdom gave no reason") : reasons),
+             "filename");
+    return false;
+  }
+  const std::string where = "'" + file.string() + "': ";
+
+  // The links, depth first from the root; floating joints become six joint values.
+  std::vector<TreeLink> links;
+  {
+    TreeLink root;
+    root.link = model->getRoot();
+    links.push_back(root);
+  }
+  if (!d_fixedBase.value()) {
+    links.clear();
+    TreeLink world;
+    world.jointName = "world";
+    links.push_back(world);
+    addFloatingJoints(links, 0, RigidCoord3{}, "base");
+    TreeLink root;
+    root.link = model->getRoot();
+    root.joint.parent = static_cast<int>(links.size()) - 1;
+    root.jointName = "base";
+    links.push_back(root);
+  }
+  std::function<bool(int)> addChildren = [&](int index) {
+    const urdf::LinkConstSharedPtr link = links[index].link;
+    for (const urdf::JointSharedPtr& j : link->child_joints) {
+      const urdf::LinkConstSharedPtr child = model->getLink(j->child_link_name);
+      if (!child) continue;
+      TreeLink t;
+      t.link = child;
+      t.jointName = j->name;
+      t.urdfJoint = j.get();
+      t.joint.parent = index;
+      t.joint.origin = toFrame(j->parent_to_joint_origin_transform);
+      t.joint.axis = toVec(j->axis);
+      switch (j->type) {
+        case urdf::Joint::REVOLUTE:
+        case urdf::Joint::CONTINUOUS: t.joint.type = JointType::revolute; break;
+        case urdf::Joint::PRISMATIC: t.joint.type = JointType::prismatic; break;
+        case urdf::Joint::FIXED: t.joint.type = JointType::fixed; break;
+        case urdf::Joint::FLOATING: {
+          addFloatingJoints(links, index, t.joint.origin, j->name);
+          t.joint.parent = static_cast<int>(links.size()) - 1;
+          t.joint.origin = RigidCoord3{};
+          t.joint.type = JointType::fixed;
+          t.urdfJoint = nullptr;
+          break;
+        }
+        default:
+          msgError(where + "joint '" + j->name + "' is planar or of unknown type: only revolute, "
+                   "continuous, prismatic, fixed and floating joints are supported",
+                   "filename");
+          return false;
+      }
+      if (t.joint.type != JointType::fixed && toVec(j->axis).norm() == 0) {
+        msgError(where + "joint '" + j->name + "' has a zero axis", "filename");
+        return false;
+      }
+      links.push_back(t);
+      if (!addChildren(static_cast<int>(links.size()) - 1)) return false;
+    }
+    return true;
+  };
+  if (!addChildren(static_cast<int>(links.size()) - 1)) return false;
+
+  // Masses and inertias, checked.
+  const std::size_t n = links.size();
+  std::vector<double> masses(n, 0.0), inertias(6 * n, 0.0);
+  std::vector<Vec3d> centers(n, Vec3d::Zero());
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!links[i].link || !links[i].link->inertial) continue;
+    const urdf::Inertial& inertial = *links[i].link->inertial;
+    const std::string name = "link '" + links[i].link->name + "'";
+    if (!(inertial.mass >= 0) || !std::isfinite(inertial.mass)) {
+      msgError(where + name + " has mass " + number(inertial.mass) +
+                   " (inertial/mass): it must be finite and non-negative",
+               "filename");
+      return false;
+    }
+    Mat3d I;
+    I << inertial.ixx, inertial.ixy, inertial.ixz, inertial.ixy, inertial.iyy, inertial.iyz,
+        inertial.ixz, inertial.iyz, inertial.izz;
+    const double smallest = Eigen::SelfAdjointEigenSolver<Mat3d>(I).eigenvalues().minCoeff();
+    if (inertial.mass > 0 && (!I.allFinite() || !(smallest > 0))) {
+      msgError(where + name + " has an inertia that is not positive definite (inertial/" +
+                   "inertia, smallest eigenvalue " + number(smallest) + " kg m^2)",
+               "filename");
+      return false;
+    }
+    // The inertia is given in the inertial frame: turn it into the link's.
+    const RigidCoord3 frame = toFrame(inertial.origin);
+    const Mat3d R = frame.orientation.toRotationMatrix();
+    const Mat3d L = R * I * R.transpose();
+    masses[i] = inertial.mass;
+    centers[i] = frame.center;
+    const double values[6] = {L(0, 0), L(0, 1), L(0, 2), L(1, 1), L(1, 2), L(2, 2)};
+    std::copy(values, values + 6, inertias.begin() + 6 * static_cast<long>(i));
+  }
+
+  // Joint values: names, damping and friction, limits.
+  std::vector<std::string> jointNames;
+  std::vector<double> damping, friction;
+  std::vector<unsigned> limited;
+  std::vector<double> lower, upper;
+  bool anyDrive = false;
+  for (const TreeLink& t : links) {
+    if (t.joint.type == JointType::fixed || t.jointName.empty()) continue;
+    const unsigned dof = static_cast<unsigned>(jointNames.size());
+    jointNames.push_back(t.jointName);
+    const urdf::Joint* j = t.urdfJoint;
+    damping.push_back(j && j->dynamics ? j->dynamics->damping : 0.0);
+    friction.push_back(j && j->dynamics ? j->dynamics->friction : 0.0);
+    anyDrive = anyDrive || damping.back() != 0 || friction.back() != 0;
+    if (j && j->limits && j->type != urdf::Joint::CONTINUOUS &&
+        j->limits->lower < j->limits->upper) {
+      limited.push_back(dof);
+      lower.push_back(j->limits->lower);
+      upper.push_back(j->limits->upper);
+    }
+  }
+  d_jointNames.setValue(jointNames);
+
+  // The subgraph.
+  SceneElement robot = element("Node", {{"name", model->getName().empty() ? "robot"
+                                                                          : model->getName()}});
+  robot.children.push_back(element(
+      "MechanicalObject",
+      {{"name", "joints"},
+       {"template", "Vec1d"},
+       {"position", joined(jointNames, [](const std::string&) { return std::string("0"); })}}));
+  robot.children.push_back(element(
+      "ArticulatedBodyMass",
+      {{"name", "mass"},
+       {"mapping", "@links/mapping"},
+       {"linkMasses", joined(masses, number)},
+       {"centersOfMass", joined(centers, vec3)},
+       {"inertias", joined(inertias, number)}}));
+  if (anyDrive)
+    robot.children.push_back(element("JointActuatorForceField",
+                                     {{"name", "drive"},
+                                      {"damping", joined(damping, number)},
+                                      {"friction", joined(friction, number)}}));
+  if (!limited.empty())
+    robot.children.push_back(element(
+        "JointLimitConstraint",
+        {{"name", "limits"},
+         {"indices", joined(limited, [](unsigned v) { return std::to_string(v); })},
+         {"lower", joined(lower, number)},
+         {"upper", joined(upper, number)}}));
+
+  std::vector<int> parents;
+  std::vector<std::string> types;
+  std::vector<RigidCoord3> origins;
+  std::vector<Vec3d> axes;
+  for (const TreeLink& t : links) {
+    parents.push_back(t.joint.parent);
+    types.push_back(t.joint.type == JointType::fixed       ? "fixed"
+                    : t.joint.type == JointType::revolute  ? "revolute"
+                                                           : "prismatic");
+    origins.push_back(t.joint.origin);
+    axes.push_back(t.joint.axis);
+  }
+  SceneElement linkNode = element("Node", {{"name", "links"}});
+  linkNode.children.push_back(
+      element("MechanicalObject", {{"name", "frames"}, {"template", "Rigid3d"}}));
+  linkNode.children.push_back(element(
+      "ArticulatedMapping",
+      {{"name", "mapping"},
+       {"input", "@../joints"},
+       {"output", "@frames"},
+       {"parents", joined(parents, [](int p) { return std::to_string(p); })},
+       {"jointTypes", joined(types, [](const std::string& s) { return s; })},
+       {"origins", joined(origins, frameText)},
+       {"axes", joined(axes, vec3)}}));
+
+  // Visual meshes, attached to their link's frame.
+  const fs::path urdfDir = fs::absolute(file).parent_path();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!links[i].link) continue;
+    int count = 0;
+    for (const urdf::VisualSharedPtr& visual : links[i].link->visual_array) {
+      if (!visual || !visual->geometry || visual->geometry->type != urdf::Geometry::MESH) continue;
+      const auto& mesh = static_cast<const urdf::Mesh&>(*visual->geometry);
+      const fs::path meshFile = findMesh(mesh.filename, urdfDir);
+      if (meshFile.empty()) {
+        msgWarning(where + "mesh '" + mesh.filename + "' of link '" + links[i].link->name +
+                       "' not found (relative to " + urdfDir.string() + "): not drawn",
+                   "filename");
+        continue;
+      }
+      const RigidCoord3 origin = toFrame(visual->origin);
+      double roll = 0, pitch = 0, yaw = 0;
+      visual->origin.rotation.getRPY(roll, pitch, yaw);
+      const double deg = 180.0 / M_PI;
+      SceneElement v = element("Node", {{"name", "visual_" + links[i].link->name +
+                                                     (count ? std::to_string(count) : "")}});
+      v.children.push_back(element(meshLoaderFor(meshFile),
+                                   {{"name", "loader"},
+                                    {"filename", meshFile.string()},
+                                    {"scale3d", vec3(toVec(mesh.scale))},
+                                    {"rotation", vec3(Vec3d(roll, pitch, yaw) * deg)},
+                                    {"translation", vec3(origin.center)}}));
+      std::vector<SceneAttribute> model = {{"name", "visual"}, {"src", "@loader"}};
+      if (visual->material && visual->material->color.a > 0) {
+        const urdf::Color& c = visual->material->color;
+        model.push_back({"color", number(c.r) + " " + number(c.g) + " " + number(c.b) + " " +
+                                      number(c.a)});
+      }
+      v.children.push_back(element("OglModel", model));
+      v.children.push_back(element("RigidMapping", {{"input", "@../frames"},
+                                                    {"output", "@visual"},
+                                                    {"index", std::to_string(i)}}));
+      linkNode.children.push_back(std::move(v));
+      ++count;
+    }
+  }
+  robot.children.push_back(std::move(linkNode));
+  node.children.push_back(std::move(robot));
+  return true;
+}
+
+}  // namespace stroma

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/Base.h"
+#include "core/Data.h"
+#include "simulation/SceneGenerator.h"
+
+namespace stroma {
+
+/// A robot from a URDF file (read by urdfdom), built in the scene as an articulated body in
+/// reduced coordinates: a child node named after the robot holding
+///   joints   MechanicalObject Vec1d, one value per moving joint (initially 0), in the order of
+///            `jointNames` (the links' tree, depth first from the root link);
+///   mass     ArticulatedBodyMass: the links' masses, centers of mass and inertias of the file,
+///            and gravity (the scene's);
+///   drive    JointActuatorForceField, when a joint has damping or friction in the file;
+///   limits   JointLimitConstraint, when a revolute or prismatic joint has limits;
+///   links/   MechanicalObject Rigid3d (a frame per link) mapped by ArticulatedMapping, with a
+///            child node per visual mesh (a mesh loader, an OglModel and a RigidMapping).
+/// Relative mesh file names are relative to the URDF file; package://p/x is looked for as x and
+/// p/x above the URDF's folder. OBJ and STL meshes use MeshOBJLoader and MeshSTLLoader, other
+/// formats MeshAssimpLoader. Box, cylinder and sphere geometries are not drawn.
+///
+/// The base link is fixed at the origin (fixedBase, default), unless fixedBase is false or the
+/// root joint is floating: then six joint values come first, x y z translations and rotations
+/// about z, y, x (yaw, pitch, roll: URDF's angles), singular at pitch = +-90 degrees.
+class URDFLoader final : public Base, public SceneGenerator {
+ public:
+  Data<FileName> d_filename{this, "filename", {}, "URDF file of the robot.", {.mustExist = true}};
+  Data<bool> d_fixedBase{this, "fixedBase", true,
+                         "Fix the base link at the origin; false: a floating base (6 joint "
+                         "values first)."};
+  Data<std::vector<std::string>> d_jointNames{
+      this, "jointNames", {}, "Name of each joint value, in the order of the joint state (output).",
+      {.output = true}};
+
+  bool generateScene(SceneElement& node) override;
+};
+
+}  // namespace stroma
