@@ -6,6 +6,7 @@
 
 #include "core/Runtime.h"
 #include "simulation/AnimationLoop.h"
+#include "simulation/ModelSceneWrapper.h"
 #include "simulation/SceneLoader.h"
 #include "simulation/SceneXml.h"
 #include "simulation/StepListener.h"
@@ -57,6 +58,9 @@ bool Scene::loadFile(const fs::path& file) {
     m_log.add(std::move(m));
     return false;
   }
+  // A model file (a robot's URDF) is a scene by itself: it is loaded in a default scene.
+  if (const std::string wrapped = wrapModelInScene(file); !wrapped.empty())
+    return load(wrapped, file);
   std::stringstream buffer;
   buffer << in.rdbuf();
   return load(buffer.str(), file);

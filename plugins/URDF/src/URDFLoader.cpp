@@ -277,6 +277,14 @@ bool URDFLoader::generateScene(SceneElement& node) {
     }
   }
   d_jointNames.setValue(jointNames);
+  std::vector<double> initial = d_initialJoints.value();
+  if (initial.empty()) initial.assign(jointNames.size(), 0.0);
+  if (initial.size() != jointNames.size()) {
+    msgError("has " + std::to_string(initial.size()) + " values for the " +
+                 std::to_string(jointNames.size()) + " joint values of the robot",
+             "initialJoints");
+    return false;
+  }
 
   // The subgraph.
   SceneElement robot = element("Node", {{"name", model->getName().empty() ? "robot"
@@ -285,7 +293,7 @@ bool URDFLoader::generateScene(SceneElement& node) {
       "MechanicalObject",
       {{"name", "joints"},
        {"template", "Vec1d"},
-       {"position", joined(jointNames, [](const std::string&) { return std::string("0"); })}}));
+       {"position", joined(initial, number)}}));
   robot.children.push_back(element(
       "ArticulatedBodyMass",
       {{"name", "mass"},

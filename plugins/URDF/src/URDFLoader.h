@@ -33,6 +33,9 @@ class URDFLoader final : public Base, public SceneGenerator {
   Data<bool> d_fixedBase{this, "fixedBase", true,
                          "Fix the base link at the origin; false: a floating base (6 joint "
                          "values first)."};
+  Data<std::vector<double>> d_initialJoints{
+      this, "initialJoints", {},
+      "Joint values at the start (nbJoints, in the order of jointNames); default: all 0."};
   Data<std::vector<std::string>> d_jointNames{
       this, "jointNames", {}, "Name of each joint value, in the order of the joint state (output).",
       {.output = true}};

@@ -48,6 +48,7 @@ struct ArmOptions {
   std::string joint1Extra;     // more elements in joint 1 (limit, dynamics)
   std::string joint1Type = "continuous";
   bool secondLink = true;
+  double baseMass = 0;         // of base_link, at its origin, with an inertia of 0.01 kg m^2
 };
 
 /// The arm: base_link fixed at the origin; joint1 (about y) at the origin moves link1; joint2
@@ -64,8 +65,12 @@ inline std::string twoLinkArm(const ArmOptions& o = {}) {
            (o.inertia > 0 ? I : "1e-9") + "\" iyz=\"0\" izz=\"" +
            (o.inertia > 0 ? I : "1e-9") + "\"/></inertial></link>\n";
   };
-  std::string text = "<?xml version=\"1.0\"?>\n<robot name=\"arm\">\n  <link name=\"base_link\"/>\n" +
-                     link("link1");
+  std::string base = "  <link name=\"base_link\"/>\n";
+  if (o.baseMass > 0)
+    base = "  <link name=\"base_link\"><inertial><mass value=\"" + std::to_string(o.baseMass) +
+           "\"/><inertia ixx=\"0.01\" ixy=\"0\" ixz=\"0\" iyy=\"0.01\" iyz=\"0\" "
+           "izz=\"0.01\"/></inertial></link>\n";
+  std::string text = "<?xml version=\"1.0\"?>\n<robot name=\"arm\">\n" + base + link("link1");
   text += "  <joint name=\"joint1\" type=\"" + o.joint1Type +
           "\"><parent link=\"base_link\"/><child link=\"link1\"/><origin xyz=\"0 0 0\"/>"
           "<axis xyz=\"0 1 0\"/>" +
@@ -80,13 +85,15 @@ inline std::string twoLinkArm(const ArmOptions& o = {}) {
 }
 
 /// A scene with gravity along -z, the given solver lines and a URDFLoader of `urdf` (written in
-/// `folder` as robot.urdf), plus `extra` in the robot's loader node.
+/// `folder` as robot.urdf, with `loaderAttributes`), plus `extra` in the loader's node.
 inline std::string armScene(const RobotFolder& folder, const std::string& urdf,
                             const std::string& solvers, const std::string& extra = "",
-                            const std::string& gravity = "0 0 -9.81") {
+                            const std::string& gravity = "0 0 -9.81",
+                            const std::string& loaderAttributes = "") {
   folder.write("robot.urdf", urdf);
   return "<Node name=\"root\" gravity=\"" + gravity + "\" dt=\"0.001\">\n" + solvers +
-         "\n<URDFLoader name=\"loader\" filename=\"robot.urdf\"/>\n" + extra + "</Node>\n";
+         "\n<URDFLoader name=\"loader\" filename=\"robot.urdf\" " + loaderAttributes +
+         "/>\n" + extra + "</Node>\n";
 }
 
 inline bool loadArm(Scene& scene, const RobotFolder& folder, const std::string& xml) {
