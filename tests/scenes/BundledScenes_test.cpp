@@ -27,7 +27,9 @@ std::vector<fs::path> bundledScenes() {
       continue;
     }
     const std::string extension = it->path().extension().string();
-    if (it->is_regular_file() && (extension == ".scn" || extension == ".xml"))
+    // A URDF robot is a scene by itself (Scene::loadFile wraps it in a default scene).
+    if (it->is_regular_file() &&
+        (extension == ".scn" || extension == ".xml" || extension == ".urdf"))
       scenes.push_back(it->path());
   }
   std::sort(scenes.begin(), scenes.end());

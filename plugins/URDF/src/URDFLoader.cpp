@@ -96,6 +96,14 @@ fs::path findMesh(const std::string& name, const fs::path& urdfDir) {
   return {};
 }
 
+// A mesh's name as the data path holds it: package://p/x is p/x (a package is a folder on the
+// data path), file://x is x.
+fs::path nameOnDataPath(const std::string& name) {
+  if (name.rfind("file://", 0) == 0) return name.substr(7);
+  if (name.rfind("package://", 0) == 0) return name.substr(10);
+  return name;
+}
+
 std::string meshLoaderFor(const fs::path& file) {
   std::string ext = file.extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -347,13 +355,10 @@ bool URDFLoader::generateScene(SceneElement& node) {
     for (const urdf::VisualSharedPtr& visual : links[i].link->visual_array) {
       if (!visual || !visual->geometry || visual->geometry->type != urdf::Geometry::MESH) continue;
       const auto& mesh = static_cast<const urdf::Mesh&>(*visual->geometry);
-      const fs::path meshFile = findMesh(mesh.filename, urdfDir);
-      if (meshFile.empty()) {
-        msgWarning(where + "mesh '" + mesh.filename + "' of link '" + links[i].link->name +
-                       "' not found (relative to " + urdfDir.string() + "): not drawn",
-                   "filename");
-        continue;
-      }
+      // Beside the URDF, else by the name inside the package on Stroma's data path (the scene
+      // loader looks for it there and reports it when missing).
+      fs::path meshFile = findMesh(mesh.filename, urdfDir);
+      if (meshFile.empty()) meshFile = nameOnDataPath(mesh.filename);
       const RigidCoord3 origin = toFrame(visual->origin);
       double roll = 0, pitch = 0, yaw = 0;
       visual->origin.rotation.getRPY(roll, pitch, yaw);

@@ -21,7 +21,9 @@ namespace stroma {
 ///   links/   MechanicalObject Rigid3d (a frame per link) mapped by ArticulatedMapping, with a
 ///            child node per visual mesh (a mesh loader, an OglModel and a RigidMapping).
 /// Relative mesh file names are relative to the URDF file; package://p/x is looked for as x and
-/// p/x above the URDF's folder. OBJ and STL meshes use MeshOBJLoader and MeshSTLLoader, other
+/// p/x in the URDF's folder and those above it; a mesh found nowhere there is looked for by the
+/// scene loader as p/x (relative to the scene, then on the data path, share/ included: a
+/// package is a folder there). OBJ and STL meshes use MeshOBJLoader and MeshSTLLoader, other
 /// formats MeshAssimpLoader. Box, cylinder and sphere geometries are not drawn.
 ///
 /// The base link is fixed at the origin (fixedBase, default), unless fixedBase is false or the
