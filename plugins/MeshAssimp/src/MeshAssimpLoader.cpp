@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "MeshAssimpLoader.h"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <sstream>
 
@@ -101,6 +103,11 @@ std::vector<const AssimpMesh*> MeshAssimpLoader::pickMeshes(const AssimpFile& fi
   const int index = d_meshIndex.value();
   const std::string& name = d_meshName.value();
   std::vector<const AssimpMesh*> picked;
+  if (index < -1) {
+    msgError("expected -1 (all meshes) or a mesh index, got " + std::to_string(index),
+             "meshIndex");
+    return picked;
+  }
   if (index >= 0 && !name.empty()) {
     msgError("meshIndex and meshName both pick a mesh: give one of them", "meshName");
     return picked;
@@ -116,9 +123,6 @@ std::vector<const AssimpMesh*> MeshAssimpLoader::pickMeshes(const AssimpFile& fi
   if (index >= 0)
     msgError("no mesh " + std::to_string(index) + " placed in '" + d_filename.value().path() +
                  "' (its meshes: " + names + ")",
-             "meshIndex");
-  else if (index < -1)
-    msgError("expected -1 (all meshes) or a mesh index, got " + std::to_string(index),
              "meshIndex");
   else
     msgError("no mesh named '" + name + "' in '" + d_filename.value().path() +

@@ -4,7 +4,10 @@
 // `stroma run`'s exit code).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "plugins/MeshIO/SceneFixture.h"
@@ -126,6 +129,9 @@ TEST(MeshAssimpLoaderCli, BadInputExitsWith2) {
       {"filename=\"" + shared("two_parts.gltf") + "\" meshName=\"handle\"",
        "no mesh named 'handle'"},
       {"filename=\"" + shared("two_parts.gltf") + "\" meshIndex=\"5\"", "no mesh 5"},
+      {"filename=\"" + shared("two_parts.gltf") + "\" meshIndex=\"-2\"", "got -2"},
+      {"filename=\"" + shared("two_parts.gltf") + "\" meshIndex=\"0\" meshName=\"box\"",
+       "give one of them"},
       {"filename=\"" + shared("two_parts.gltf") + "\" scale=\"1 2\"", "field 'scale'"},
   };
   for (const Case& c : cases) {
