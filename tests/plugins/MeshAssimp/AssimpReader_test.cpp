@@ -227,6 +227,28 @@ TEST(AssimpReader, QuadsAndJoinedPoints) {
   EXPECT_LT(joined.positions.size(), quads.positions.size());
 }
 
+// A format Stroma has no parser of its own for: OFF (the surface of a tetrahedron): the
+// triangles as written.
+TEST(AssimpReader, ReadsOff) {
+  TempDir dir;
+  const std::string off = dir.write("tetra.off",
+                                    "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                                    "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")
+                              .string();
+  const MeshData mesh = readMerged(off);
+  ASSERT_EQ(mesh.triangles.size(), 4u);
+  std::multiset<std::array<double, 9>> expected, got;
+  const Vec3d corner[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const Triangle faces[4] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  const auto key = [](const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+    return std::array<double, 9>{a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2]};
+  };
+  for (const Triangle& f : faces) expected.insert(key(corner[f[0]], corner[f[1]], corner[f[2]]));
+  for (const Triangle& t : mesh.triangles)
+    got.insert(key(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]));
+  EXPECT_EQ(got, expected);
+}
+
 TEST(AssimpReader, BadFilesGiveAssimpsReason) {
   TempDir dir;
   AssimpFile read;
