@@ -9,7 +9,8 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .add("MeshAssimpLoader",
            "Reads any mesh file assimp reads (glTF, PLY, OBJ, STL, DAE, FBX, OFF...), node "
            "transforms applied, with its material for visual models")
-      .with<stroma::MeshAssimpLoader>();
+      .with<stroma::MeshAssimpLoader>()
+      .alias("AssimpLoader");  // the name in SOFA's SofaAssimp plugin
 }
 
 }  // namespace

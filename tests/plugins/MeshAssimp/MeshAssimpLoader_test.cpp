@@ -66,6 +66,14 @@ TEST_F(MeshAssimpLoaderTest, MergedByDefaultOrOneMeshPicked) {
   EXPECT_EQ(value("/byIndex", "color"), "0.1 0.7 0.2 1");
 }
 
+// SOFA's scenes name it AssimpLoader (SofaAssimp's examples: src into a MechanicalObject).
+TEST_F(MeshAssimpLoaderTest, SofaNameAssimpLoader) {
+  ASSERT_TRUE(load(wrap("<AssimpLoader name=\"sofa\" filename=\"" + shared("organ_surface.ply") +
+                        "\"/>\n<MechanicalObject name=\"dofs\" src=\"@sofa\"/>\n")))
+      << messages();
+  EXPECT_EQ(numbers(value("/dofs", "position")).size(), 3u * 643);
+}
+
 TEST_F(MeshAssimpLoaderTest, LoaderTransformAfterTheNodeTransforms) {
   ASSERT_TRUE(load(wrap(loader("plain", "two_parts.gltf", "meshName=\"wedge\"") +
                         loader("moved", "two_parts.gltf",
