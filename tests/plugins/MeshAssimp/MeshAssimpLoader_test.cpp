@@ -178,5 +178,25 @@ TEST(MeshAssimpLoaderCli, ComponentsFileListsTheRegisteredComponents) {
   EXPECT_EQ(listed, registered) << run.output;
 }
 
+// The index plugins/MeshAssimp/CMakeLists.txt writes where assimp is missing
+// (stroma_add_unavailable_plugin): a scene using the loader is told what to install.
+TEST(MeshAssimpLoaderCli, WithoutAssimpASceneIsToldToInstallIt) {
+  TempDir dir;
+  dir.write("MeshAssimp.stroma-plugin",
+            "plugin MeshAssimp\nunavailable it needs assimp (the Debian package libassimp-dev): "
+            "install it (scripts/install-deps.sh does) and build Stroma again\n"
+            "component MeshAssimpLoader\ncomponent AssimpLoader\n");
+  Runtime runtime;
+  runtime.plugins().setSearchPath({dir.path()});
+  Scene scene(runtime);
+  EXPECT_FALSE(scene.loadString("<Node name=\"root\"><MeshAssimpLoader name=\"mesh\" "
+                                "filename=\"" + shared("organ_surface.ply") + "\"/></Node>"));
+  const Message m = findError(scene.log(), "MeshAssimpLoader");
+  EXPECT_NE(m.text.find("is in plugin MeshAssimp, which this build left out: it needs assimp "
+                        "(the Debian package libassimp-dev)"),
+            std::string::npos)
+      << describe(scene.log());
+}
+
 }  // namespace
 }  // namespace stroma::test
