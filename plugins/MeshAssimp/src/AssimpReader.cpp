@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "AssimpReader.h"
 
+#include <assimp/config.h>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -42,7 +43,8 @@ AssimpMaterial readMaterial(const aiMaterial& material, const std::filesystem::p
   result.ambient = color(material, AI_MATKEY_COLOR_AMBIENT);
   result.specular = color(material, AI_MATKEY_COLOR_SPECULAR);
   float shininess = 0;
-  if (material.Get(AI_MATKEY_SHININESS, shininess) == aiReturn_SUCCESS) result.shininess = shininess;
+  if (material.Get(AI_MATKEY_SHININESS, shininess) == aiReturn_SUCCESS)
+    result.shininess = shininess;
 
   aiString texture;
   if (material.GetTexture(aiTextureType_DIFFUSE, 0, &texture) != aiReturn_SUCCESS &&
@@ -61,8 +63,8 @@ AssimpMaterial readMaterial(const aiMaterial& material, const std::filesystem::p
 }
 
 /// Copies one assimp mesh, placed by `transform`. False (with `error`) on an index out of range.
-bool copyMesh(const aiMesh& source, const Eigen::Matrix4d& transform, const AssimpReadOptions& options,
-              MeshData& mesh, std::string& error) {
+bool copyMesh(const aiMesh& source, const Eigen::Matrix4d& transform,
+              const AssimpReadOptions& options, MeshData& mesh, std::string& error) {
   const Eigen::Matrix3d linear = transform.topLeftCorner<3, 3>();
   const Eigen::Vector3d shift = transform.topRightCorner<3, 1>();
   const Eigen::Matrix3d normalMap = linear.inverse().transpose();
@@ -78,7 +80,7 @@ bool copyMesh(const aiMesh& source, const Eigen::Matrix4d& transform, const Assi
       const double length = mapped.norm();
       // assimp leaves NaN (or zero) normals at points of degenerate faces only.
       mesh.normals.push_back(length > 0 && std::isfinite(length) ? Vec3d(mapped / length)
-                                                                  : Vec3d::Zero());
+                                                                 : Vec3d::Zero());
     }
   }
   if (source.mTextureCoords[0]) {
@@ -144,6 +146,10 @@ bool readAssimpFile(const std::string& path, const AssimpReadOptions& options, A
                     std::string& error) {
   file = {};
   Assimp::Importer importer;
+  // Coordinates as the file writes them: assimp would turn a Collada Z_UP file to y up, which
+  // would turn the meshes of a URDF robot (z up, as ROS) away from their links. Its unit is
+  // still applied (points in meters).
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   unsigned flags = aiProcess_ValidateDataStructure | aiProcess_GenSmoothNormals;
   if (!options.keepQuads) flags |= aiProcess_Triangulate;
   if (options.joinIdenticalVertices) flags |= aiProcess_JoinIdenticalVertices;

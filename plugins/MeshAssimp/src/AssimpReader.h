@@ -33,14 +33,14 @@ struct AssimpMaterial {
   std::optional<Vec4d> ambient;
   std::optional<Vec4d> specular;
   std::optional<double> shininess;
-  std::string texture;  ///< the diffuse texture's path (relative ones made absolute); or empty
+  std::string texture;     ///< the diffuse texture's path (relative ones made absolute); or empty
   bool isDefault = false;  ///< assimp's stand-in for a file without materials (or unnamed)
 };
 
 struct AssimpMesh {
-  std::string name;    ///< the mesh's name in the file (may be empty)
-  std::string node;    ///< the name of the node that places it
-  MeshData mesh;       ///< positions, edges, triangles, quads, normals and texcoords
+  std::string name;  ///< the mesh's name in the file (may be empty)
+  std::string node;  ///< the name of the node that places it
+  MeshData mesh;     ///< positions, edges, triangles, quads, normals and texcoords
   unsigned material = 0;
   unsigned fileIndex = 0;  ///< its index among the file's meshes
 };

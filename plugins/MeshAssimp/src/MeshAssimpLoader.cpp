@@ -30,8 +30,7 @@ std::string materialText(const AssimpMaterial& m) {
   part("Ambient", m.ambient);
   part("Specular", m.specular);
   // OglModel takes [0, 128] (OpenGL's range); formats such as glTF give none.
-  if (m.shininess)
-    text += " Shininess 1 " + std::to_string(std::clamp(*m.shininess, 0.0, 128.0));
+  if (m.shininess) text += " Shininess 1 " + std::to_string(std::clamp(*m.shininess, 0.0, 128.0));
   return text;
 }
 
@@ -77,9 +76,9 @@ bool MeshAssimpLoader::userTransform(Eigen::Matrix4d& transform) {
   const std::vector<double>& matrix = d_transformation.value();
   if (!matrix.empty()) {
     if (matrix.size() != 16) {
-      msgError("expected 16 numbers (a 4x4 matrix, row by row), got " +
-                   std::to_string(matrix.size()),
-               "transformation");
+      msgError(
+          "expected 16 numbers (a 4x4 matrix, row by row), got " + std::to_string(matrix.size()),
+          "transformation");
       return false;
     }
     for (std::size_t i = 0; i < 16; ++i) transform(i / 4, i % 4) = matrix[i];
@@ -104,8 +103,7 @@ std::vector<const AssimpMesh*> MeshAssimpLoader::pickMeshes(const AssimpFile& fi
   const std::string& name = d_meshName.value();
   std::vector<const AssimpMesh*> picked;
   if (index < -1) {
-    msgError("expected -1 (all meshes) or a mesh index, got " + std::to_string(index),
-             "meshIndex");
+    msgError("expected -1 (all meshes) or a mesh index, got " + std::to_string(index), "meshIndex");
     return picked;
   }
   if (index >= 0 && !name.empty()) {

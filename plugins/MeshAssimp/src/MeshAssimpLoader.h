@@ -21,11 +21,8 @@ namespace stroma {
 /// transformation), then flipNormals.
 class MeshAssimpLoader final : public Base, public DataEngine {
  public:
-  Data<FileName> d_filename{this,
-                            "filename",
-                            {},
-                            "Mesh file to read, in any format assimp reads.",
-                            {.autoLink = false}};
+  Data<FileName> d_filename{
+      this, "filename", {}, "Mesh file to read, in any format assimp reads.", {.autoLink = false}};
   Data<int> d_meshIndex{this,
                         "meshIndex",
                         -1,

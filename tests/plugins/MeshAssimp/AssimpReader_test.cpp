@@ -2,6 +2,8 @@
 // readAssimpFile on the files share/mesh/make_formats.py writes: the organ surface in OBJ, STL,
 // PLY and glTF gives the same points and triangles as Stroma's own OBJ and STL parsers, texture
 // coordinates and unit normals; the node transforms of a glTF scene are applied.
+#include "AssimpReader.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,7 +11,6 @@
 #include <filesystem>
 #include <set>
 
-#include "AssimpReader.h"
 #include "plugins/TestPlugin/TestSupport.h"
 
 namespace stroma::test {
@@ -61,7 +62,8 @@ std::multiset<std::array<Index, 3>> trianglesInReference(const MeshData& mesh, d
     map[i] = static_cast<Index>(best);
   }
   std::multiset<std::array<Index, 3>> result;
-  for (const Triangle& t : mesh.triangles) result.insert(canonical({map[t[0]], map[t[1]], map[t[2]]}));
+  for (const Triangle& t : mesh.triangles)
+    result.insert(canonical({map[t[0]], map[t[1]], map[t[2]]}));
   return result;
 }
 
@@ -142,8 +144,8 @@ TEST(AssimpReader, TexcoordsAreTheProjectionWritten) {
 // Normals (STL's facet normals, assimp's smooth normals for the others) are unit vectors and
 // point out of the closed surface: along the outward normal of the triangles at the point.
 TEST(AssimpReader, NormalsAreUnitAndOutward) {
-  for (const char* name : {"organ_surface.ply", "organ_surface.gltf", "organ_surface.obj",
-                           "organ_surface.stl"}) {
+  for (const char* name :
+       {"organ_surface.ply", "organ_surface.gltf", "organ_surface.obj", "organ_surface.stl"}) {
     const MeshData mesh = readMerged(shared(name));
     ASSERT_EQ(mesh.normals.size(), mesh.positions.size()) << name;
     std::vector<Vec3d> faceSum(mesh.positions.size(), Vec3d::Zero());
@@ -247,6 +249,65 @@ TEST(AssimpReader, ReadsOff) {
   for (const Triangle& t : mesh.triangles)
     got.insert(key(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]));
   EXPECT_EQ(got, expected);
+}
+
+// Collada: one triangle placed by two nodes comes out twice, each moved by its node; the file's
+// unit (millimeters here) is applied, and its Z_UP axis is kept as written (assimp would turn
+// it to y up; URDF meshes are z up as their links).
+TEST(AssimpReader, ColladaInstancesUnitAndUpAxis) {
+  TempDir dir;
+  const std::string dae =
+      dir.write(
+             "two.dae",
+             "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+             "<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" version=\"1.4.1\">\n"
+             "  <asset><unit name=\"meter\" meter=\"0.001\"/><up_axis>Z_UP</up_axis></asset>\n"
+             "  <library_geometries>\n"
+             "    <geometry id=\"tri\" name=\"tri\">\n"
+             "      <mesh>\n"
+             "        <source id=\"tri-pos\">\n"
+             "          <float_array id=\"tri-pos-array\" count=\"9\">0 0 0 1 0 0 0 1 "
+             "0</float_array>\n"
+             "          <technique_common><accessor source=\"#tri-pos-array\" count=\"3\" "
+             "stride=\"3\">\n"
+             "            <param name=\"X\" type=\"float\"/><param name=\"Y\" "
+             "type=\"float\"/><param name=\"Z\" type=\"float\"/>\n"
+             "          </accessor></technique_common>\n"
+             "        </source>\n"
+             "        <vertices id=\"tri-vtx\"><input semantic=\"POSITION\" "
+             "source=\"#tri-pos\"/></vertices>\n"
+             "        <triangles count=\"1\"><input semantic=\"VERTEX\" source=\"#tri-vtx\" "
+             "offset=\"0\"/><p>0 1 2</p></triangles>\n"
+             "      </mesh>\n"
+             "    </geometry>\n"
+             "  </library_geometries>\n"
+             "  <library_visual_scenes>\n"
+             "    <visual_scene id=\"scene\">\n"
+             "      <node id=\"left\" name=\"left\"><translate>-5 0 "
+             "0</translate><instance_geometry url=\"#tri\"/></node>\n"
+             "      <node id=\"right\" name=\"right\"><translate>5 0 "
+             "0</translate><instance_geometry url=\"#tri\"/></node>\n"
+             "    </visual_scene>\n"
+             "  </library_visual_scenes>\n"
+             "  <scene><instance_visual_scene url=\"#scene\"/></scene>\n"
+             "</COLLADA>\n")
+          .string();
+  AssimpFile read;
+  std::string error;
+  ASSERT_TRUE(readAssimpFile(dae, {}, read, error)) << error;
+  ASSERT_EQ(read.meshNames.size(), 1u);
+  ASSERT_EQ(read.meshes.size(), 2u);
+  const Vec3d triangle[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const double shift[2] = {-5, 5};
+  for (int m = 0; m < 2; ++m) {
+    EXPECT_EQ(read.meshes[m].node, m == 0 ? "left" : "right");
+    ASSERT_EQ(read.meshes[m].mesh.positions.size(), 3u);
+    for (int i = 0; i < 3; ++i)
+      EXPECT_LT(
+          (read.meshes[m].mesh.positions[i] - 1e-3 * (triangle[i] + Vec3d(shift[m], 0, 0))).norm(),
+          1e-9)
+          << m << " " << i;
+  }
 }
 
 TEST(AssimpReader, BadFilesGiveAssimpsReason) {

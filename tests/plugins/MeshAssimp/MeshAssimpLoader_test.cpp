@@ -57,9 +57,9 @@ TEST_F(MeshAssimpLoaderTest, MergedByDefaultOrOneMeshPicked) {
   std::vector<std::string> list{std::istream_iterator<std::string>(names), {}};
   ASSERT_EQ(list.size(), 2u);
   const auto wedgeIndex = std::find(list.begin(), list.end(), "wedge") - list.begin();
-  ASSERT_TRUE(load(wrap(loader("byIndex", "two_parts.gltf",
-                               "meshIndex=\"" + std::to_string(wedgeIndex) + "\"") +
-                        loader("byName", "two_parts.gltf", "meshName=\"wedge\""))))
+  ASSERT_TRUE(load(
+      wrap(loader("byIndex", "two_parts.gltf", "meshIndex=\"" + std::to_string(wedgeIndex) + "\"") +
+           loader("byName", "two_parts.gltf", "meshName=\"wedge\""))))
       << messages();
   EXPECT_EQ(value("/byIndex", "position"), value("/byName", "position"));
   // The wedge's own material.
@@ -75,9 +75,9 @@ TEST_F(MeshAssimpLoaderTest, SofaNameAssimpLoader) {
 }
 
 TEST_F(MeshAssimpLoaderTest, LoaderTransformAfterTheNodeTransforms) {
-  ASSERT_TRUE(load(wrap(loader("plain", "two_parts.gltf", "meshName=\"wedge\"") +
-                        loader("moved", "two_parts.gltf",
-                               "meshName=\"wedge\" scale=\"2\" translation=\"10 0 0\""))))
+  ASSERT_TRUE(load(wrap(
+      loader("plain", "two_parts.gltf", "meshName=\"wedge\"") +
+      loader("moved", "two_parts.gltf", "meshName=\"wedge\" scale=\"2\" translation=\"10 0 0\""))))
       << messages();
   const std::vector<double> plain = numbers(value("/plain", "position"));
   const std::vector<double> moved = numbers(value("/moved", "position"));
@@ -143,10 +143,9 @@ TEST(MeshAssimpLoaderCli, BadInputExitsWith2) {
       {"filename=\"" + shared("two_parts.gltf") + "\" scale=\"1 2\"", "field 'scale'"},
   };
   for (const Case& c : cases) {
-    const CliRun run = runScene(STROMA_CLI,
-                                "<Node name=\"root\"><MeshAssimpLoader name=\"mesh\" " +
-                                    c.attributes + "/></Node>",
-                                1);
+    const CliRun run = runScene(
+        STROMA_CLI,
+        "<Node name=\"root\"><MeshAssimpLoader name=\"mesh\" " + c.attributes + "/></Node>", 1);
     EXPECT_EQ(run.exitCode, 2) << c.attributes << "\n" << run.output;
     EXPECT_NE(run.output.find("/root/mesh (MeshAssimpLoader)"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find(c.expected), std::string::npos) << run.output;
@@ -161,8 +160,8 @@ TEST(MeshAssimpLoaderCli, BadInputExitsWith2) {
 
 // The list a build without assimp writes in its index names what this build registers.
 TEST(MeshAssimpLoaderCli, ComponentsFileListsTheRegisteredComponents) {
-  const CliRun run = runCli(STROMA_CLI, "plugin-index \"" + std::string(STROMA_PLUGIN_FILE) +
-                                            "\" --output /dev/stdout");
+  const CliRun run = runCli(
+      STROMA_CLI, "plugin-index \"" + std::string(STROMA_PLUGIN_FILE) + "\" --output /dev/stdout");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   std::ifstream list(std::string(STROMA_SOURCE_DIR) + "/plugins/MeshAssimp/components.txt");
   ASSERT_TRUE(list);
@@ -189,8 +188,10 @@ TEST(MeshAssimpLoaderCli, WithoutAssimpASceneIsToldToInstallIt) {
   Runtime runtime;
   runtime.plugins().setSearchPath({dir.path()});
   Scene scene(runtime);
-  EXPECT_FALSE(scene.loadString("<Node name=\"root\"><MeshAssimpLoader name=\"mesh\" "
-                                "filename=\"" + shared("organ_surface.ply") + "\"/></Node>"));
+  EXPECT_FALSE(
+      scene.loadString("<Node name=\"root\"><MeshAssimpLoader name=\"mesh\" "
+                       "filename=\"" +
+                       shared("organ_surface.ply") + "\"/></Node>"));
   const Message m = findError(scene.log(), "MeshAssimpLoader");
   EXPECT_NE(m.text.find("is in plugin MeshAssimp, which this build left out: it needs assimp "
                         "(the Debian package libassimp-dev)"),
