@@ -66,6 +66,30 @@ TEST_F(MeshAssimpLoaderTest, MergedByDefaultOrOneMeshPicked) {
   EXPECT_EQ(value("/byIndex", "color"), "0.1 0.7 0.2 1");
 }
 
+// The organ surface through the components: MeshAssimpLoader on the PLY and glTF files gives
+// what MeshSTLLoader gives on the STL they were written from (the same points in the same
+// order, the same triangles), and what MeshOBJLoader gives on the OBJ (its points are the
+// decimal text, equal to the float32 values once rounded to float).
+TEST_F(MeshAssimpLoaderTest, SameAsMeshStlAndObjLoaders) {
+  ASSERT_TRUE(load(wrap(loader("ply", "organ_surface.ply") + loader("gltf", "organ_surface.gltf") +
+                        "<MeshSTLLoader name=\"stl\" filename=\"" + shared("organ_surface.stl") +
+                        "\"/>\n"
+                        "<MeshOBJLoader name=\"obj\" filename=\"" +
+                        shared("organ_surface.obj") + "\"/>\n")))
+      << messages();
+  EXPECT_EQ(numbers(value("/stl", "position")).size(), 3u * 643);
+  for (const char* l : {"/ply", "/gltf"}) {
+    EXPECT_EQ(value(l, "position"), value("/stl", "position")) << l;
+    EXPECT_EQ(value(l, "triangles"), value("/stl", "triangles")) << l;
+    EXPECT_EQ(value(l, "triangles"), value("/obj", "triangles")) << l;
+  }
+  const std::vector<double> obj = numbers(value("/obj", "position"));
+  const std::vector<double> gltf = numbers(value("/gltf", "position"));
+  ASSERT_EQ(obj.size(), gltf.size());
+  for (std::size_t i = 0; i < obj.size(); ++i)
+    EXPECT_EQ(static_cast<float>(obj[i]), static_cast<float>(gltf[i])) << i;
+}
+
 // SOFA's scenes name it AssimpLoader (SofaAssimp's examples: src into a MechanicalObject).
 TEST_F(MeshAssimpLoaderTest, SofaNameAssimpLoader) {
   ASSERT_TRUE(load(wrap("<AssimpLoader name=\"sofa\" filename=\"" + shared("organ_surface.ply") +
