@@ -53,6 +53,19 @@ void ArticulatedBodyMass::init() {
              "centersOfMass");
     return;
   }
+  const auto& armature = d_armature.value();
+  const std::size_t joints = mstate() ? mstate()->size() : 0;
+  if (armature.size() > 1 && armature.size() != joints) {
+    msgError("has " + std::to_string(armature.size()) + " values for " +
+                 std::to_string(joints) + " joint values (give one per joint, or one for all)",
+             "armature");
+    return;
+  }
+  for (double a : armature)
+    if (!(a >= 0) || !std::isfinite(a)) {
+      msgError("values must be finite and non-negative", "armature");
+      return;
+    }
   const auto& values = d_inertias.value();
   if (!values.empty() && values.size() != 6 * links) {
     msgError("has " + std::to_string(values.size()) + " values for " + std::to_string(links) +
@@ -103,6 +116,9 @@ Eigen::MatrixXd ArticulatedBodyMass::computeMassMatrix(const VecCoord& q) const 
     }
     M += m * Jv.transpose() * Jv + Jw.transpose() * (R * m_inertias[i] * R.transpose()) * Jw;
   }
+  const auto& armature = d_armature.value();
+  for (std::size_t j = 0; j < n; ++j)
+    M(j, j) += armature.empty() ? 0.0 : armature.size() == 1 ? armature[0] : armature[j];
   return M;
 }
 

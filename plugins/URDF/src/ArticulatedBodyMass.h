@@ -44,6 +44,13 @@ class ArticulatedBodyMass final : public Mass<Vec1Types> {
       "ixz iyy iyz izz', URDF's order); default: zero.",
       {.unit = "kg m^2"}};
 
+  Data<std::vector<double>> d_armature{
+      this, "armature", {},
+      "Rotor inertia reflected at each joint (nbJoints, or one for all), added to M's diagonal "
+      "(MuJoCo's armature): URDF has none; it also keeps light distal links from making M "
+      "stiff.",
+      {.unit = "kg m^2"}};
+
   void init() override;
 
   void addForce(const MechanicalParams& mp, VecDeriv& f, const VecCoord& x,

@@ -308,7 +308,8 @@ bool URDFLoader::generateScene(SceneElement& node) {
        {"mapping", "@links/mapping"},
        {"linkMasses", joined(masses, number)},
        {"centersOfMass", joined(centers, vec3)},
-       {"inertias", joined(inertias, number)}}));
+       {"inertias", joined(inertias, number)},
+       {"armature", number(d_armature.value())}}));
   if (anyDrive)
     robot.children.push_back(element("JointActuatorForceField",
                                      {{"name", "drive"},
@@ -345,7 +346,8 @@ bool URDFLoader::generateScene(SceneElement& node) {
        {"parents", joined(parents, [](int p) { return std::to_string(p); })},
        {"jointTypes", joined(types, [](const std::string& s) { return s; })},
        {"origins", joined(origins, frameText)},
-       {"axes", joined(axes, vec3)}}));
+       {"axes", joined(axes, vec3)},
+       {"base", frameText(d_basePose.value())}}));
 
   // Visual meshes, attached to their link's frame.
   const fs::path urdfDir = fs::absolute(file).parent_path();

@@ -6,6 +6,7 @@
 
 #include "core/Base.h"
 #include "core/Data.h"
+#include "core/Types.h"
 #include "simulation/SceneGenerator.h"
 
 namespace stroma {
@@ -35,9 +36,17 @@ class URDFLoader final : public Base, public SceneGenerator {
   Data<bool> d_fixedBase{this, "fixedBase", true,
                          "Fix the base link at the origin; false: a floating base (6 joint "
                          "values first)."};
+  Data<RigidCoord3> d_basePose{this, "basePose", RigidCoord3{},
+                               "World frame of the root link ('x y z qx qy qz qw'), or of the "
+                               "floating base's start.",
+                               {.unit = "m"}};
   Data<std::vector<double>> d_initialJoints{
       this, "initialJoints", {},
       "Joint values at the start (nbJoints, in the order of jointNames); default: all 0."};
+  Data<double> d_armature{this, "armature", 0.0,
+                          "Rotor inertia reflected at every joint, added to the joint-space "
+                          "mass (ArticulatedBodyMass armature).",
+                          {.unit = "kg m^2", .min = 0.0}};
   Data<std::vector<std::string>> d_jointNames{
       this, "jointNames", {}, "Name of each joint value, in the order of the joint state (output).",
       {.output = true}};

@@ -42,6 +42,27 @@ TEST(ArticulatedBodyMass, MassMatrixIsTheDoublePendulums) {
   }
 }
 
+// The loader's armature (rotor inertia) adds to each diagonal entry of M.
+TEST(ArticulatedBodyMass, ArmatureAddsToTheDiagonal) {
+  std::vector<Vec1d> without, with;
+  for (const std::string& armature : {"0", "0.1"}) {
+    RobotFolder folder;
+    Runtime runtime;
+    Scene scene(runtime);
+    ASSERT_TRUE(loadArm(scene, folder,
+                        armScene(folder, twoLinkArm(), "", "", "0 0 -9.81",
+                                 "armature=\"" + armature + "\"")))
+        << problems(scene.log());
+    auto* mass = findInScene<Mass<Vec1Types>>(scene.root());
+    ASSERT_NE(mass, nullptr);
+    std::vector<Vec1d> f(2, Vec1d::Zero());
+    mass->addMDx(f, {Vec1d(1.0), Vec1d(0.0)}, 1.0);
+    (armature == "0" ? without : with) = f;
+  }
+  EXPECT_NEAR(with[0][0] - without[0][0], 0.1, 1e-12);  // M11 + armature
+  EXPECT_NEAR(with[1][0] - without[1][0], 0.0, 1e-12);  // M21 unchanged
+}
+
 struct EnergyRun {
   double maxDrift = 0;    // max |E(t) - E(0)| / (total mass x g x reach)
   double finalDrift = 0;  // (E(10 s) - E(0)) / the same
