@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <set>
 
 #include "plugins/TestPlugin/TestSupport.h"
@@ -307,6 +309,31 @@ TEST(AssimpReader, ColladaInstancesUnitAndUpAxis) {
           (read.meshes[m].mesh.positions[i] - 1e-3 * (triangle[i] + Vec3d(shift[m], 0, 0))).norm(),
           1e-9)
           << m << " " << i;
+  }
+}
+
+// Truncated files (cut at 1/16, 2/16, ... of their length) never crash: each is read or refused
+// with a reason, and what is read has its indices within its points.
+TEST(AssimpReader, TruncatedFilesAreReadOrRefused) {
+  TempDir dir;
+  for (const char* name : {"organ_surface.ply", "organ_surface.gltf", "organ_surface.obj",
+                           "organ_surface.stl", "two_parts.gltf"}) {
+    std::ifstream in(shared(name), std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    ASSERT_FALSE(bytes.empty()) << name;
+    for (int k = 1; k < 16; ++k) {
+      const std::string cut = bytes.substr(0, bytes.size() * k / 16);
+      const std::string file = dir.write(std::to_string(k) + "_" + name, cut).string();
+      AssimpFile read;
+      std::string error;
+      if (!readAssimpFile(file, {}, read, error)) {
+        EXPECT_FALSE(error.empty()) << file;
+        continue;
+      }
+      for (const AssimpMesh& m : read.meshes)
+        for (const Triangle& t : m.mesh.triangles)
+          for (Index v : t) ASSERT_LT(v, m.mesh.positions.size()) << file;
+    }
   }
 }
 
