@@ -43,9 +43,18 @@ LinearSolveReport SparseLDLSolver::solve(MechanicalOperations& mop, const Mechan
   // indefinite system exactly (a compressed spring or a buckling element makes K indefinite),
   // but the user is told once, since a dynamic system matrix should be positive definite.
   const Eigen::VectorXd& D = m_ldlt.vectorD();
-  const double largestPivot = D.size() > 0 ? D.cwiseAbs().maxCoeff() : 0.0;
+  // A failed factorization stops at its first zero pivot and leaves the later entries of D
+  // unwritten (whatever the memory held): only the pivots up to that one are read.
+  Eigen::Index computed = D.size();
+  if (m_ldlt.info() != Eigen::Success)
+    for (Eigen::Index k = 0; k < D.size(); ++k)
+      if (D[k] == 0.0 || !std::isfinite(D[k])) {
+        computed = k + 1;
+        break;
+      }
+  const double largestPivot = computed > 0 ? D.head(computed).cwiseAbs().maxCoeff() : 0.0;
   Eigen::Index bad = -1, negative = -1;
-  for (Eigen::Index k = 0; k < D.size() && bad < 0; ++k) {
+  for (Eigen::Index k = 0; k < computed && bad < 0; ++k) {
     if (!std::isfinite(D[k]) || std::abs(D[k]) <= 1e-14 * largestPivot)
       bad = k;
     else if (D[k] < 0 && negative < 0)
