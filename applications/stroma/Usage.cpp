@@ -15,7 +15,9 @@ struct CommandHelp {
 
 // clang-format off
 const CommandHelp kCommands[] = {
-    {"run", R"(  stroma run SCENE [options]        load a scene, run it, print a timing summary
+    {"run", R"(  stroma run SCENE [options]        load a scene, run it, print a timing summary; SCENE may be
+                                    a robot's .urdf (in a default scene: gravity -z, implicit
+                                    solver, the base fixed unless its root joint floats)
       -n STEPS                      number of time steps (default 100)
       --dt DT                       time step, overriding the scene's (s)
       --threads N                   threads for parallel element loops (default: all cores)

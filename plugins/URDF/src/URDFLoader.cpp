@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include <console_bridge/console.h>
+#include <tinyxml2.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include <Eigen/Eigenvalues>
@@ -161,8 +162,14 @@ bool URDFLoader::generateScene(SceneElement& node) {
     for (const std::string& t : messages.texts) reasons += (reasons.empty() ? "" : "; ") + t;
   }
   if (!model) {
+    // urdfdom's XML reader gives no line: tinyxml2 (the scene reader's) does, for XML errors.
+    std::string line;
+    tinyxml2::XMLDocument document;
+    if (document.Parse(text.str().data(), text.str().size()) != tinyxml2::XML_SUCCESS)
+      line = std::string(" (line ") + std::to_string(document.ErrorLineNum()) + ": " +
+             document.ErrorName() + ")";
     msgError("'" + file.string() + "' is not a valid URDF robot: " +
-                 (reasons.empty() ? std::string("urdfdom gave no reason") : reasons),
+                 (reasons.empty() ? std::string("urdfdom gave no reason") : reasons) + line,
              "filename");
     return false;
   }

@@ -110,6 +110,7 @@ TEST(URDFLoader, BadRobotsAreErrorsNamingComponentFieldAndFile) {
     EXPECT_EQ(m.field, "filename");
     EXPECT_NE(m.text.find("robot.urdf"), std::string::npos) << m.text;
     EXPECT_NE(m.text.find("not a valid URDF"), std::string::npos) << m.text;
+    EXPECT_NE(m.text.find("(line 1: "), std::string::npos) << m.text;
     std::printf("unparsable: %s\n", m.text.c_str());
   }
   {
