@@ -139,6 +139,59 @@ void addFloatingJoints(std::vector<TreeLink>& links, int parent, const RigidCoor
   }
 }
 
+// The <collision> meshes and spheres of the links as collision models attached to their link's
+// frame (index i of links/frames).
+void addCollisionNodes(SceneElement& linkNode, const std::vector<TreeLink>& links,
+                       const fs::path& urdfDir, const std::string& stiffness) {
+  for (std::size_t i = 0; i < links.size(); ++i) {
+    if (!links[i].link) continue;
+    int count = 0;
+    for (const urdf::CollisionSharedPtr& collision : links[i].link->collision_array) {
+      if (!collision || !collision->geometry) continue;
+      const RigidCoord3 origin = toFrame(collision->origin);
+      const std::string name =
+          "collision_" + links[i].link->name + (count ? "_" + std::to_string(count) : "");
+      SceneElement c = element("Node", {{"name", name}});
+      const std::vector<SceneAttribute> mapping = {
+          {"input", "@../frames"}, {"index", std::to_string(i)}};
+      if (collision->geometry->type == urdf::Geometry::MESH) {
+        const auto& mesh = static_cast<const urdf::Mesh&>(*collision->geometry);
+        fs::path meshFile = findMesh(mesh.filename, urdfDir);
+        if (meshFile.empty()) meshFile = nameOnDataPath(mesh.filename);
+        double roll = 0, pitch = 0, yaw = 0;
+        collision->origin.rotation.getRPY(roll, pitch, yaw);
+        const double deg = 180.0 / M_PI;
+        c.children.push_back(element(meshLoaderFor(meshFile),
+                                     {{"name", "loader"},
+                                      {"filename", meshFile.string()},
+                                      {"scale3d", vec3(toVec(mesh.scale))},
+                                      {"rotation", vec3(Vec3d(roll, pitch, yaw) * deg)},
+                                      {"translation", vec3(origin.center)}}));
+        c.children.push_back(element("MeshTopology", {{"name", "topology"}, {"src", "@loader"}}));
+        c.children.push_back(element(
+            "MechanicalObject", {{"name", "points"}, {"template", "Vec3d"}, {"src", "@loader"}}));
+        c.children.push_back(element("RigidMapping", mapping));
+        for (const char* model :
+             {"TriangleCollisionModel", "LineCollisionModel", "PointCollisionModel"})
+          c.children.push_back(element(model, {{"contactStiffness", stiffness}}));
+      } else if (collision->geometry->type == urdf::Geometry::SPHERE) {
+        const auto& sphere = static_cast<const urdf::Sphere&>(*collision->geometry);
+        c.children.push_back(element("MechanicalObject", {{"name", "points"},
+                                                          {"template", "Vec3d"},
+                                                          {"position", vec3(origin.center)}}));
+        c.children.push_back(element("RigidMapping", mapping));
+        c.children.push_back(element(
+            "SphereCollisionModel",
+            {{"radius", number(sphere.radius)}, {"contactStiffness", stiffness}}));
+      } else {
+        continue;  // boxes and cylinders: not yet
+      }
+      linkNode.children.push_back(std::move(c));
+      ++count;
+    }
+  }
+}
+
 }  // namespace
 
 bool URDFLoader::generateScene(SceneElement& node) {
@@ -373,7 +426,7 @@ bool URDFLoader::generateScene(SceneElement& node) {
       visual->origin.rotation.getRPY(roll, pitch, yaw);
       const double deg = 180.0 / M_PI;
       SceneElement v = element("Node", {{"name", "visual_" + links[i].link->name +
-                                                     (count ? std::to_string(count) : "")}});
+                                                     (count ? "_" + std::to_string(count) : "")}});
       v.children.push_back(element(meshLoaderFor(meshFile),
                                    {{"name", "loader"},
                                     {"filename", meshFile.string()},
@@ -394,6 +447,8 @@ bool URDFLoader::generateScene(SceneElement& node) {
       ++count;
     }
   }
+  if (d_collisionModels.value())
+    addCollisionNodes(linkNode, links, urdfDir, number(d_contactStiffness.value()));
   robot.children.push_back(std::move(linkNode));
   node.children.push_back(std::move(robot));
   return true;

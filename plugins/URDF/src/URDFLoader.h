@@ -25,7 +25,10 @@ namespace stroma {
 /// p/x in the URDF's folder and those above it; a mesh found nowhere there is looked for by the
 /// scene loader as p/x (relative to the scene, then on the data path, share/ included: a
 /// package is a folder there). OBJ and STL meshes use MeshOBJLoader and MeshSTLLoader, other
-/// formats MeshAssimpLoader. Box, cylinder and sphere geometries are not drawn.
+/// formats MeshAssimpLoader. Box, cylinder and sphere geometries are not drawn. With
+/// collisionModels, each <collision> mesh becomes a child node of links/ (the mesh loader, a
+/// Vec3d state and its triangles, RigidMapping onto the link, Triangle, Line and Point
+/// collision models) and each sphere a SphereCollisionModel on a mapped point.
 ///
 /// The base link is fixed at the origin (fixedBase, default), unless fixedBase is false or the
 /// root joint is floating: then six joint values come first, x y z translations and rotations
@@ -47,6 +50,13 @@ class URDFLoader final : public Base, public SceneGenerator {
                           "Rotor inertia reflected at every joint, added to the joint-space "
                           "mass (ArticulatedBodyMass armature).",
                           {.unit = "kg m^2", .min = 0.0}};
+  Data<bool> d_collisionModels{
+      this, "collisionModels", false,
+      "Also build the links' <collision> meshes (and spheres) as collision models (plugin "
+      "Collision: the scene needs a CollisionPipeline); their contact forces reach the joints "
+      "through the mappings."};
+  Data<double> d_contactStiffness{this, "contactStiffness", 10.0,
+                                  "contactStiffness of those collision models.", {.min = 0.0}};
   Data<std::vector<std::string>> d_jointNames{
       this, "jointNames", {}, "Name of each joint value, in the order of the joint state (output).",
       {.output = true}};
