@@ -20,30 +20,14 @@
 #include <vector>
 
 // Allocation counting: every operator new of this program, and Bullet's allocations (through
-// btAlignedAllocSetCustom), while g_countAllocations is set.
-namespace {
-bool g_countAllocations = false;
-long g_allocations = 0;
-}  // namespace
-
-// GCC inlines these next to each other and flags free() of operator new's memory, which is
-// this malloc.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-#endif
-void* operator new(std::size_t size) {
-  if (g_countAllocations) ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+// btAlignedAllocSetCustom), while g_counting is set.
+#include "support/AllocationCounter.h"
 
 namespace stroma::collision {
 namespace {
 
 void* countedBulletAlloc(std::size_t size) {
-  if (g_countAllocations) ++g_allocations;
+  if (g_counting) ++g_allocations;
   return std::malloc(size);
 }
 void countedBulletFree(void* p) { std::free(p); }
@@ -565,11 +549,11 @@ TEST(PrimitiveTree, RefitAndQueriesAllocateNothingOnceWarm) {
   for (const double amplitude : {0.01, 0.01, 0.01, 10.0, 0.01}) {
     moveBoxes(a, amplitude, rng);
     g_allocations = 0;
-    g_countAllocations = true;
+    g_counting = true;
     treeA.refit(a);
     treeA.overlappingPairs(treeB, pairs);
     treeA.selfOverlappingPairs(selfPairs);
-    g_countAllocations = false;
+    g_counting = false;
     EXPECT_EQ(g_allocations, 0) << "motion amplitude " << amplitude;
     EXPECT_EQ(sorted(pairs), bruteForcePairs(a, b));
   }
