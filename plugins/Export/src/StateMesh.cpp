@@ -63,6 +63,19 @@ bool appendCells(const Topology* topology, const CellSelection& selection, std::
           appendList(t.hexahedra(), CellType::hexahedron, "hexahedron", pointCount, mesh, error));
 }
 
+bool nodeMesh(const Node* node, const std::vector<Vec3d>& given, const CellSelection& selection,
+              UnstructuredMesh& mesh, std::string& error) {
+  const Topology* topology = node ? node->getUp<Topology>() : nullptr;
+  const auto* state = node ? node->get<BaseMechanicalState>() : nullptr;
+  if (!given.empty())
+    mesh.points = given;
+  else if (state)
+    mesh.points = statePoints(*state);
+  else if (topology)
+    mesh.points = topology->positions();
+  return appendCells(topology, selection, mesh.points.size(), mesh, error);
+}
+
 std::vector<Vec3d> statePoints(const BaseMechanicalState& state) {
   std::vector<double> flat;
   state.copyPositions(flat);

@@ -33,6 +33,12 @@ CellSelection highestDimensionCells(const Topology* topology);
 bool appendCells(const Topology* topology, const CellSelection& selection, std::size_t pointCount,
                  UnstructuredMesh& mesh, std::string& error);
 
+/// The mesh an exporter component writes from its node: the `given` points when there are
+/// some, else the node's state's, else the positions of the topology above; the selected
+/// elements of that topology as cells (appendCells). False with `error` as appendCells.
+bool nodeMesh(const Node* node, const std::vector<Vec3d>& given, const CellSelection& selection,
+              UnstructuredMesh& mesh, std::string& error);
+
 /// The positions of `state` as points: x y z of a Vec3d state, the centre of a Rigid3d frame,
 /// zeros in the missing coordinates of Vec1d and Vec2d states.
 std::vector<Vec3d> statePoints(const BaseMechanicalState& state);

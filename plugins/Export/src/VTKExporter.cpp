@@ -82,15 +82,6 @@ void VTKExporter::cleanup() {
 
 void VTKExporter::write() {
   vtk::UnstructuredMesh mesh;
-  const Topology* topology = node() ? node()->getUp<Topology>() : nullptr;
-  const auto* state = node() ? node()->get<BaseMechanicalState>() : nullptr;
-  if (!d_position.value().empty())
-    mesh.points = d_position.value();
-  else if (state)
-    mesh.points = vtk::statePoints(*state);
-  else if (topology)
-    mesh.points = topology->positions();
-
   vtk::CellSelection selection;
   selection.edges = d_edges.value();
   selection.triangles = d_triangles.value();
@@ -98,7 +89,7 @@ void VTKExporter::write() {
   selection.tetrahedra = d_tetras.value();
   selection.hexahedra = d_hexas.value();
   std::string error;
-  if (!vtk::appendCells(topology, selection, mesh.points.size(), mesh, error)) {
+  if (!vtk::nodeMesh(node(), d_position.value(), selection, mesh, error)) {
     msgError("the topology does not fit the points: " + error);
     m_ready = false;
     return;
