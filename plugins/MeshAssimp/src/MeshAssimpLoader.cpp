@@ -39,7 +39,8 @@ std::string materialText(const AssimpMaterial& m) {
 MeshAssimpLoader::MeshAssimpLoader() {
   for (BaseData* input : std::initializer_list<BaseData*>{
            &d_filename, &d_meshIndex, &d_meshName, &d_keepQuads, &d_joinIdenticalVertices,
-           &d_translation, &d_rotation, &d_scale3d, &d_scale, &d_transformation, &d_flipNormals})
+           &m_placement.translation, &m_placement.rotation, &m_placement.scale3d,
+           &m_placement.scale, &m_placement.transformation, &m_placement.flipNormals})
     addInput(input);
   for (BaseData* output : std::initializer_list<BaseData*>{
            &d_position, &d_edges, &d_triangles, &d_quads, &d_normals, &d_texcoords, &d_color,
@@ -73,29 +74,7 @@ void MeshAssimpLoader::setMaterialOutputs(const AssimpMaterial* material) {
 }
 
 bool MeshAssimpLoader::userTransform(Eigen::Matrix4d& transform) {
-  const std::vector<double>& matrix = d_transformation.value();
-  if (!matrix.empty()) {
-    if (matrix.size() != 16) {
-      msgError(
-          "expected 16 numbers (a 4x4 matrix, row by row), got " + std::to_string(matrix.size()),
-          "transformation");
-      return false;
-    }
-    for (std::size_t i = 0; i < 16; ++i) transform(i / 4, i % 4) = matrix[i];
-    return true;
-  }
-  const std::vector<double>& scale = d_scale.value();
-  Vec3d scale3d = d_scale3d.value();
-  if (scale.size() == 1) {
-    scale3d *= scale[0];
-  } else if (scale.size() == 3) {
-    scale3d = scale3d.cwiseProduct(Vec3d(scale[0], scale[1], scale[2]));
-  } else if (!scale.empty()) {
-    msgError("expected one number (or three), got " + std::to_string(scale.size()), "scale");
-    return false;
-  }
-  transform = makeTransform(scale3d, d_rotation.value(), d_translation.value());
-  return true;
+  return m_placement.matrix(*this, transform);
 }
 
 std::vector<const AssimpMesh*> MeshAssimpLoader::pickMeshes(const AssimpFile& file) {
@@ -170,7 +149,7 @@ void MeshAssimpLoader::doUpdate() {
   }
   MeshData mesh = mergeMeshes(picked);
   if (transform != Eigen::Matrix4d::Identity()) transformMesh(mesh, transform);
-  if (d_flipNormals.value()) flipOrientation(mesh);
+  if (m_placement.flipNormals.value()) flipOrientation(mesh);
 
   const unsigned materialIndex = picked.front()->material;
   setMaterialOutputs(materialIndex < read.materials.size() ? &read.materials[materialIndex]

@@ -9,8 +9,8 @@ namespace stroma {
 
 MeshLoader::MeshLoader(MeshFormat format) : m_format(format) {
   for (BaseData* input : std::initializer_list<BaseData*>{
-           &d_filename, &d_translation, &d_rotation, &d_scale3d, &d_scale, &d_transformation,
-           &d_flipNormals, &d_triangulate, &d_createSubelements, &d_onlyAttachedPoints})
+           &d_filename, &m_placement.translation, &m_placement.rotation, &m_placement.scale3d,
+           &m_placement.scale, &m_placement.transformation, &m_placement.flipNormals, &d_triangulate, &d_createSubelements, &d_onlyAttachedPoints})
     addInput(input);
   for (BaseData* output : std::initializer_list<BaseData*>{
            &d_position, &d_edges, &d_triangles, &d_quads, &d_tetrahedra, &d_hexahedra, &d_normals})
@@ -44,29 +44,9 @@ void MeshLoader::doUpdate() {
   }
   // Transformation settings, checked before the file is read.
   Eigen::Matrix4d transform = Eigen::Matrix4d::Identity();
-  const std::vector<double>& matrix = d_transformation.value();
-  const std::vector<double>& scale = d_scale.value();
-  if (!matrix.empty()) {
-    if (matrix.size() != 16) {
-      msgError(
-          "expected 16 numbers (a 4x4 matrix, row by row), got " + std::to_string(matrix.size()),
-          "transformation");
-      clearOutputs();
-      return;
-    }
-    for (int i = 0; i < 16; ++i) transform(i / 4, i % 4) = matrix[static_cast<std::size_t>(i)];
-  } else {
-    Vec3d scale3d = d_scale3d.value();
-    if (scale.size() == 1)
-      scale3d *= scale[0];
-    else if (scale.size() == 3)
-      scale3d = scale3d.cwiseProduct(Vec3d(scale[0], scale[1], scale[2]));
-    else if (!scale.empty()) {
-      msgError("expected one number (or three), got " + std::to_string(scale.size()), "scale");
-      clearOutputs();
-      return;
-    }
-    transform = makeTransform(scale3d, d_rotation.value(), d_translation.value());
+  if (!m_placement.matrix(*this, transform)) {
+    clearOutputs();
+    return;
   }
 
   // A file the scene named but the scene loader could not find is already reported there.
@@ -93,7 +73,7 @@ void MeshLoader::doUpdate() {
   if (d_createSubelements.value()) createSubelements(mesh);
   if (d_onlyAttachedPoints.value()) removeUnattachedPoints(mesh);
   if (transform != Eigen::Matrix4d::Identity()) transformMesh(mesh, transform);
-  if (d_flipNormals.value()) flipOrientation(mesh);
+  if (m_placement.flipNormals.value()) flipOrientation(mesh);
 
   d_position.setValue(std::move(mesh.positions));
   d_edges.setValue(std::move(mesh.edges));

@@ -5,6 +5,7 @@
 
 #include "core/Base.h"
 #include "core/Types.h"
+#include "formats/LoaderTransform.h"
 #include "formats/MeshData.h"
 #include "topology/TopologyTypes.h"
 
@@ -26,36 +27,7 @@ class MeshLoader : public Base, public DataEngine {
                             {},
                             "Mesh file to read, relative to the scene's folder or the data path.",
                             {.autoLink = false}};
-  Data<Vec3d> d_translation{this,
-                            "translation",
-                            Vec3d::Zero(),
-                            "Translation of the points, applied last.",
-                            {.unit = "m", .autoLink = false}};
-  Data<Vec3d> d_rotation{this,
-                         "rotation",
-                         Vec3d::Zero(),
-                         "Rotation of the points, about x then y then z, after the scale.",
-                         {.unit = "deg", .autoLink = false}};
-  Data<Vec3d> d_scale3d{
-      this, "scale3d", Vec3d::Ones(), "Scale of the points along x, y and z.", {.autoLink = false}};
-  Data<std::vector<double>> d_scale{
-      this,
-      "scale",
-      {},
-      "Uniform scale factor (one number) multiplying scale3d; three numbers scale x, y and z.",
-      {.autoLink = false}};
-  Data<std::vector<double>> d_transformation{
-      this,
-      "transformation",
-      {},
-      "4x4 homogeneous matrix, row by row (16 numbers); when given, it replaces translation, "
-      "rotation and scale.",
-      {.autoLink = false}};
-  Data<bool> d_flipNormals{this,
-                           "flipNormals",
-                           false,
-                           "Reverse the orientation of triangles and quads, and the normals.",
-                           {.autoLink = false}};
+  LoaderTransform m_placement{this};
   Data<bool> d_triangulate{
       this, "triangulate", false, "Split each quad into two triangles.", {.autoLink = false}};
   Data<bool> d_createSubelements{
