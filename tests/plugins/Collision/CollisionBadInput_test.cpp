@@ -36,11 +36,8 @@ TEST_P(CollisionBadInput, IsAnErrorNamingTheComponentAndField) {
   Runtime runtime;
   Scene scene(runtime);
   EXPECT_FALSE(scene.loadString("<Node name=\"root\">" + c.xml + "</Node>"));
-  bool found = false;
-  for (const Message& m : errors(scene.log()))
-    found |=
-        m.componentPath == c.path && m.field == c.field && m.text.find(c.text) != std::string::npos;
-  EXPECT_TRUE(found) << c.what << ":\n" << describe(scene.log());
+  EXPECT_TRUE(hasError(scene.log(), c.path, c.field, c.text))
+      << c.what << ":\n" << describe(scene.log());
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -257,11 +257,8 @@ TEST_P(LagrangianBadInput, IsAnErrorNamingTheComponentAndField) {
   bool failed = !scene.loadString(c.xml);
   for (int n = 0; n < 2 && !failed; ++n) failed = !scene.step();
   EXPECT_TRUE(failed) << c.what;
-  bool found = false;
-  for (const Message& m : errors(scene.log()))
-    found |= m.componentPath == c.path && m.field == c.field &&
-             m.text.find(c.text) != std::string::npos;
-  EXPECT_TRUE(found) << c.what << ":\n" << describe(scene.log());
+  EXPECT_TRUE(hasError(scene.log(), c.path, c.field, c.text))
+      << c.what << ":\n" << describe(scene.log());
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -510,11 +510,8 @@ TEST_P(PrecomputedCorrectionBadInput, IsAnErrorNamingTheComponentAndField) {
   Runtime runtime;
   Scene scene(runtime);
   EXPECT_FALSE(scene.loadString(c.xml)) << c.what;
-  bool found = false;
-  for (const Message& m : errors(scene.log()))
-    found |=
-        m.componentPath == c.path && m.field == c.field && m.text.find(c.text) != std::string::npos;
-  EXPECT_TRUE(found) << c.what << ":\n" << describe(scene.log());
+  EXPECT_TRUE(hasError(scene.log(), c.path, c.field, c.text))
+      << c.what << ":\n" << describe(scene.log());
 }
 
 std::string pointBody(const std::string& solver, const std::string& state,

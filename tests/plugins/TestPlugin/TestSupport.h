@@ -74,6 +74,16 @@ inline std::vector<Message> errors(const MessageLog& log) {
   return result;
 }
 
+/// Whether the log holds an error of the component at `path`, naming `field`, whose text
+/// contains `text`: what every bad-input test asks.
+inline bool hasError(const MessageLog& log, std::string_view path, std::string_view field,
+                     std::string_view text) {
+  for (const Message& m : errors(log))
+    if (m.componentPath == path && m.field == field && m.text.find(text) != std::string::npos)
+      return true;
+  return false;
+}
+
 /// The first error whose text contains `needle`; a default Message (empty text) when none.
 inline Message findError(const MessageLog& log, std::string_view needle) {
   for (Message& m : errors(log))
