@@ -22,6 +22,7 @@
 #include "core/Runtime.h"
 #include "core/StateTypes.h"
 #include "plugins/TestPlugin/TestSupport.h"
+#include "scenes/SceneLists.h"
 #include "simulation/MechanicalOperations.h"
 #include "simulation/MechanicalState.h"
 #include "simulation/Scene.h"
@@ -33,13 +34,7 @@ namespace fs = std::filesystem;
 
 const fs::path kSofaDir = fs::path(STROMA_SHARED_DIR) / "sofa";
 
-std::vector<std::string> coreScenes() {
-  std::vector<std::string> scenes;
-  std::ifstream in(kSofaDir / "core-scenes.txt");
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty() && line[0] != '#') scenes.push_back(line);
-  return scenes;
-}
+std::vector<std::string> coreScenes() { return readSceneList(kSofaDir / "core-scenes.txt"); }
 
 class CoreScenes : public ::testing::Test {
  protected:

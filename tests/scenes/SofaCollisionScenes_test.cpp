@@ -16,6 +16,7 @@
 #include "core/Runtime.h"
 #include "core/StateTypes.h"
 #include "plugins/TestPlugin/TestSupport.h"
+#include "scenes/SceneLists.h"
 #include "simulation/MechanicalState.h"
 #include "simulation/Scene.h"
 
@@ -27,19 +28,11 @@ namespace fs = std::filesystem;
 const fs::path kSofaDir = fs::path(STROMA_SHARED_DIR) / "sofa";
 
 std::vector<std::string> collisionScenes() {
-  std::vector<std::string> scenes;
-  std::ifstream in(fs::path(STROMA_SOURCE_DIR) / "tests/scenes/sofa-collision-scenes.txt");
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty() && line[0] != '#') scenes.push_back(line);
-  return scenes;
+  return readSceneList(fs::path(STROMA_SOURCE_DIR) / "tests/scenes/sofa-collision-scenes.txt");
 }
 
 /// A build without Bullet: the reason, else empty.
-std::string collisionLeftOut(Runtime& runtime) {
-  for (const auto& entry : runtime.plugins().available())
-    if (entry.name == "Collision" && !entry.unavailable.empty()) return entry.unavailable;
-  return {};
-}
+std::string collisionLeftOut(Runtime& runtime) { return pluginLeftOut(runtime, "Collision"); }
 
 bool allFinite(const Node& node) {
   for (const auto& o : node.objects())

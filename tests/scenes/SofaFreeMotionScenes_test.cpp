@@ -14,6 +14,7 @@
 
 #include "core/Runtime.h"
 #include "plugins/TestPlugin/TestSupport.h"
+#include "scenes/SceneLists.h"
 #include "simulation/MechanicalState.h"
 #include "simulation/Scene.h"
 
@@ -25,11 +26,7 @@ namespace fs = std::filesystem;
 const fs::path kSofaDir = fs::path(STROMA_SHARED_DIR) / "sofa";
 
 std::vector<std::string> freeMotionScenes() {
-  std::vector<std::string> scenes;
-  std::ifstream in(fs::path(STROMA_SOURCE_DIR) / "tests/scenes/sofa-freemotion-scenes.txt");
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty() && line[0] != '#') scenes.push_back(line);
-  return scenes;
+  return readSceneList(fs::path(STROMA_SOURCE_DIR) / "tests/scenes/sofa-freemotion-scenes.txt");
 }
 
 // The largest |component| of the positions (or velocities) of every state; infinity when one
@@ -51,9 +48,8 @@ TEST(SofaFreeMotionScenes, EachRuns100StepsWithoutErrorAndStaysBounded) {
     GTEST_SKIP() << "SOFA's scenes are not at " << kSofaDir
                  << " (the shared test data lives beside the clone)";
   Runtime runtime;
-  for (const auto& entry : runtime.plugins().available())
-    if (entry.name == "Collision" && !entry.unavailable.empty())
-      GTEST_SKIP() << "this build left the Collision plugin out: " << entry.unavailable;
+  if (const std::string why = pluginLeftOut(runtime, "Collision"); !why.empty())
+    GTEST_SKIP() << "this build left the Collision plugin out: " << why;
   runtime.addDataDirectory(kSofaDir / "share");
   runtime.addDataDirectory(kSofaDir / "examples");
   const std::vector<std::string> scenes = freeMotionScenes();
