@@ -149,4 +149,26 @@ void setColorMaterial(const Vec4d& color) {
   setMaterial(ambient, color, Vec4d(0.2, 0.2, 0.2, 1), Vec4d(0, 0, 0, 1), 20);
 }
 
+PixelSpace::PixelSpace(int width, int height) {
+  glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT);
+  glDisable(GL_LIGHTING);
+  glDisable(GL_TEXTURE_2D);
+  glDisable(GL_DEPTH_TEST);
+  glMatrixMode(GL_PROJECTION);
+  glPushMatrix();
+  glLoadIdentity();
+  glOrtho(0, width, height, 0, -1, 1);  // pixels, y downwards
+  glMatrixMode(GL_MODELVIEW);
+  glPushMatrix();
+  glLoadIdentity();
+}
+
+PixelSpace::~PixelSpace() {
+  glPopMatrix();
+  glMatrixMode(GL_PROJECTION);
+  glPopMatrix();
+  glMatrixMode(GL_MODELVIEW);
+  glPopAttrib();
+}
+
 }  // namespace stroma::rendering

@@ -32,6 +32,17 @@ void drawSphere(const Vec3d& center, double radius);
 /// The 12 edges of an oriented box.
 void drawBoxEdges(const OrientedBox& box);
 
+/// While it lives, drawing is in pixels of a width x height picture (origin at the top left, y
+/// downwards), unlit, untextured and over everything; the matrices and those states come back
+/// when it ends. For legends and text.
+class PixelSpace {
+ public:
+  PixelSpace(int width, int height);
+  ~PixelSpace();
+  PixelSpace(const PixelSpace&) = delete;
+  PixelSpace& operator=(const PixelSpace&) = delete;
+};
+
 /// Sets the front and back material from colors in [0, 1].
 void setMaterial(const Vec4d& ambient, const Vec4d& diffuse, const Vec4d& specular,
                  const Vec4d& emissive, double shininess);

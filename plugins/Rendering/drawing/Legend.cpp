@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "GlPrimitives.h"
 #include "stroma/rendering/BitmapFont.h"
 
 namespace stroma::rendering {
@@ -38,36 +39,23 @@ LegendPlacement drawLegend(ColorMapKind kind, double min, double max, int width,
   const int barLeft = l.barLeft, barRight = l.barRight, barTop = l.barTop, barBottom = l.barBottom;
   const int barHeight = barBottom - barTop;
 
-  glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT);
-  glDisable(GL_LIGHTING);
-  glDisable(GL_TEXTURE_2D);
-  glDisable(GL_DEPTH_TEST);
-  glMatrixMode(GL_PROJECTION);
-  glPushMatrix();
-  glLoadIdentity();
-  glOrtho(0, width, height, 0, -1, 1);
-  glMatrixMode(GL_MODELVIEW);
-  glPushMatrix();
-  glLoadIdentity();
-  fillRect(l.panelLeft, l.panelTop, l.panelRight, l.panelBottom, Vec4d(0.08, 0.08, 0.1, 1));
-  // The bar, min at the bottom, in strips whose ends take the ramp's colors.
-  constexpr int kStrips = 32;
-  glShadeModel(GL_SMOOTH);
-  glBegin(GL_QUAD_STRIP);
-  for (int k = 0; k <= kStrips; ++k) {
-    const double t = static_cast<double>(k) / kStrips;
-    const Vec3d c = rampColor(t);
-    const double y = barBottom - t * barHeight;
-    glColor3d(c[0], c[1], c[2]);
-    glVertex2d(barLeft, y);
-    glVertex2d(barRight, y);
+  {
+    const PixelSpace pixels(width, height);
+    fillRect(l.panelLeft, l.panelTop, l.panelRight, l.panelBottom, Vec4d(0.08, 0.08, 0.1, 1));
+    // The bar, min at the bottom, in strips whose ends take the ramp's colors.
+    constexpr int kStrips = 32;
+    glShadeModel(GL_SMOOTH);
+    glBegin(GL_QUAD_STRIP);
+    for (int k = 0; k <= kStrips; ++k) {
+      const double t = static_cast<double>(k) / kStrips;
+      const Vec3d c = rampColor(t);
+      const double y = barBottom - t * barHeight;
+      glColor3d(c[0], c[1], c[2]);
+      glVertex2d(barLeft, y);
+      glVertex2d(barRight, y);
+    }
+    glEnd();
   }
-  glEnd();
-  glPopMatrix();
-  glMatrixMode(GL_PROJECTION);
-  glPopMatrix();
-  glMatrixMode(GL_MODELVIEW);
-  glPopAttrib();
 
   const Vec4d white(1, 1, 1, 1);
   drawText(l.title, l.titleX, l.titleY, s, white, width, height);

@@ -3,23 +3,14 @@
 // layout) links no OpenGL.
 #include <GL/gl.h>
 
+#include "GlPrimitives.h"
 #include "stroma/rendering/BitmapFont.h"
 
 namespace stroma::rendering {
 
 void drawText(std::string_view text, int x, int y, int scale, const Vec4d& color, int width,
               int height) {
-  glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT);
-  glDisable(GL_LIGHTING);
-  glDisable(GL_TEXTURE_2D);
-  glDisable(GL_DEPTH_TEST);
-  glMatrixMode(GL_PROJECTION);
-  glPushMatrix();
-  glLoadIdentity();
-  glOrtho(0, width, height, 0, -1, 1);  // pixels, y downwards
-  glMatrixMode(GL_MODELVIEW);
-  glPushMatrix();
-  glLoadIdentity();
+  const PixelSpace pixels(width, height);
   glColor4d(color[0], color[1], color[2], color[3]);
   glBegin(GL_QUADS);
   for (std::size_t i = 0; i < text.size(); ++i) {
@@ -36,11 +27,6 @@ void drawText(std::string_view text, int x, int y, int scale, const Vec4d& color
       }
   }
   glEnd();
-  glPopMatrix();
-  glMatrixMode(GL_PROJECTION);
-  glPopMatrix();
-  glMatrixMode(GL_MODELVIEW);
-  glPopAttrib();
 }
 
 }  // namespace stroma::rendering
