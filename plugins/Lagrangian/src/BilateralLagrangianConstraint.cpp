@@ -4,15 +4,15 @@
 #include <algorithm>
 #include <array>
 
-#include "StateLinks.h"
+#include "simulation/StateLinks.h"
 #include "core/IndexChecks.h"
 
 namespace stroma {
 
 template <class DataTypes>
 void BilateralLagrangianConstraint<DataTypes>::init() {
-  m_state1 = lagrangian::resolveState<DataTypes>(*this, l_object1, "object1");
-  m_state2 = l_object2 ? lagrangian::resolveState<DataTypes>(*this, l_object2, "object2") : m_state1;
+  m_state1 = resolveState<DataTypes>(*this, l_object1, "object1");
+  m_state2 = l_object2 ? resolveState<DataTypes>(*this, l_object2, "object2") : m_state1;
 }
 
 // The points are checked once every component is initialized: they may come from an engine

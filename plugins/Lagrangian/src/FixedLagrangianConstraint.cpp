@@ -4,7 +4,7 @@
 #include <array>
 #include <numeric>
 
-#include "StateLinks.h"
+#include "simulation/StateLinks.h"
 #include "core/IndexChecks.h"
 
 namespace stroma {
@@ -23,7 +23,7 @@ Vec3d rotationVector(const Quat& a, const Quat& b) {
 
 template <class DataTypes>
 void FixedLagrangianConstraint<DataTypes>::init() {
-  m_state = lagrangian::resolveState<DataTypes>(*this, l_mstate, "mstate");
+  m_state = resolveState<DataTypes>(*this, l_mstate, "mstate");
 }
 
 // The indices and start positions are taken once every component is initialized: they may come

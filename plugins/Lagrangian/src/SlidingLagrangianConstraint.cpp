@@ -3,14 +3,14 @@
 
 #include <algorithm>
 
-#include "StateLinks.h"
+#include "simulation/StateLinks.h"
 #include "core/IndexChecks.h"
 
 namespace stroma {
 
 void SlidingLagrangianConstraint::init() {
-  m_state1 = lagrangian::resolveState<Vec3Types>(*this, l_object1, "object1");
-  m_state2 = l_object2 ? lagrangian::resolveState<Vec3Types>(*this, l_object2, "object2") : m_state1;
+  m_state1 = resolveState<Vec3Types>(*this, l_object1, "object1");
+  m_state2 = l_object2 ? resolveState<Vec3Types>(*this, l_object2, "object2") : m_state1;
 }
 
 // Checked once every component is initialized (the states may be initialized after this one).

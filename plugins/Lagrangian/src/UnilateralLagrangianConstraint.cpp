@@ -4,14 +4,14 @@
 #include <algorithm>
 #include <cmath>
 
-#include "StateLinks.h"
+#include "simulation/StateLinks.h"
 #include "core/IndexChecks.h"
 
 namespace stroma {
 
 void UnilateralLagrangianConstraint::init() {
-  m_state1 = lagrangian::resolveState<Vec3Types>(*this, l_object1, "object1");
-  m_state2 = l_object2 ? lagrangian::resolveState<Vec3Types>(*this, l_object2, "object2") : m_state1;
+  m_state1 = resolveState<Vec3Types>(*this, l_object1, "object1");
+  m_state2 = l_object2 ? resolveState<Vec3Types>(*this, l_object2, "object2") : m_state1;
   if (!m_state1 || !m_state2) return;
   const double length = d_normal.value().norm();
   if (!(length > 0) || !std::isfinite(length)) {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// What the Lagrangian constraints between states share: finding their states from links (a
-// state, or a node holding one; by default the constraint's own node's).
+// Finding a component's state from a link (a state, or a node holding one; by default the
+// component's own node's): the Lagrangian constraints and the URDF joint limits use it.
 #pragma once
 
 #include <string>
@@ -9,7 +9,7 @@
 #include "core/Node.h"
 #include "simulation/MechanicalState.h"
 
-namespace stroma::lagrangian {
+namespace stroma {
 
 /// The state `link` names (or holds, for a node); without a link, the one in `owner`'s node.
 /// Reports an error naming `field` and returns nullptr when there is none of this type.
@@ -27,4 +27,4 @@ MechanicalState<DataTypes>* resolveState(Base& owner, const Link<Base>& link, co
   return state;
 }
 
-}  // namespace stroma::lagrangian
+}  // namespace stroma
