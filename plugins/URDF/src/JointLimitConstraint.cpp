@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "JointLimitConstraint.h"
 
+#include "JointLimitLagrangianConstraint.h"
+
 #include <algorithm>
 
 namespace stroma {
@@ -9,29 +11,8 @@ void JointLimitConstraint::init() {
   ProjectiveConstraint<Vec1Types>::init();
   m_ready = false;
   if (!mstate()) return;
-  const std::size_t n = d_indices.value().size();
-  if (d_lower.value().size() != n || d_upper.value().size() != n) {
-    msgError("lower and upper need one bound per index (" + std::to_string(n) + "), got " +
-                 std::to_string(d_lower.value().size()) + " and " +
-                 std::to_string(d_upper.value().size()),
-             d_lower.value().size() != n ? "lower" : "upper");
-    return;
-  }
-  for (std::size_t k = 0; k < n; ++k) {
-    if (d_indices.value()[k] >= mstate()->size()) {
-      msgError("index " + std::to_string(d_indices.value()[k]) + " is out of range of the " +
-                   std::to_string(mstate()->size()) + " joint values",
-               "indices");
-      return;
-    }
-    if (!(d_lower.value()[k] <= d_upper.value()[k])) {
-      msgError("the range of joint value " + std::to_string(d_indices.value()[k]) +
-                   " is empty (lower > upper)",
-               "lower");
-      return;
-    }
-  }
-  m_ready = true;
+  m_ready = checkJointLimits(*this, d_indices.value(), d_lower.value(), d_upper.value(),
+                             mstate()->size());
 }
 
 void JointLimitConstraint::projectPosition(VecCoord& x, double) {

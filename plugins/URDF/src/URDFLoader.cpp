@@ -14,6 +14,8 @@
 #include <Eigen/Eigenvalues>
 
 #include "KinematicTree.h"
+#include "core/Node.h"
+#include "simulation/Constraints.h"
 
 namespace stroma {
 
@@ -193,6 +195,12 @@ void addCollisionNodes(SceneElement& linkNode, const std::vector<TreeLink>& link
 }
 
 }  // namespace
+
+JointLimitMethod URDFLoader::limitMethod() const {
+  if (d_jointLimits.value() != JointLimitMethod::automatic) return d_jointLimits.value();
+  const bool solvesMultipliers = node() && node()->root().get<BaseConstraintSolver>() != nullptr;
+  return solvesMultipliers ? JointLimitMethod::lagrangian : JointLimitMethod::projective;
+}
 
 bool URDFLoader::generateScene(SceneElement& node) {
   const fs::path file = d_filename.value().path();
@@ -375,9 +383,10 @@ bool URDFLoader::generateScene(SceneElement& node) {
                                      {{"name", "drive"},
                                       {"damping", joined(damping, number)},
                                       {"friction", joined(friction, number)}}));
-  if (!limited.empty())
+  if (!limited.empty() && limitMethod() != JointLimitMethod::none)
     robot.children.push_back(element(
-        "JointLimitConstraint",
+        limitMethod() == JointLimitMethod::lagrangian ? "JointLimitLagrangianConstraint"
+                                                      : "JointLimitConstraint",
         {{"name", "limits"},
          {"indices", joined(limited, [](unsigned v) { return std::to_string(v); })},
          {"lower", joined(lower, number)},

@@ -4,12 +4,26 @@
 #include <string>
 #include <vector>
 
+#include <array>
+#include <string_view>
+
 #include "core/Base.h"
 #include "core/Data.h"
 #include "core/Types.h"
 #include "simulation/SceneGenerator.h"
 
 namespace stroma {
+
+/// How URDFLoader enforces the joints' limits: `auto` as Lagrange multipliers when the scene
+/// solves them (a constraint solver in the root node before the loader: FreeMotionAnimationLoop
+/// with GenericConstraintSolver), else by projection.
+enum class JointLimitMethod { automatic, lagrangian, projective, none };
+
+template <>
+struct EnumKeywords<JointLimitMethod> {
+  static constexpr std::array<std::string_view, 4> names{"auto", "lagrangian", "projective",
+                                                        "none"};
+};
 
 /// A robot from a URDF file (read by urdfdom), built in the scene as an articulated body in
 /// reduced coordinates: a child node named after the robot holding
@@ -18,7 +32,9 @@ namespace stroma {
 ///   mass     ArticulatedBodyMass: the links' masses, centers of mass and inertias of the file,
 ///            and gravity (the scene's);
 ///   drive    JointActuatorForceField, when a joint has damping or friction in the file;
-///   limits   JointLimitConstraint, when a revolute or prismatic joint has limits;
+///   limits   when a revolute or prismatic joint has limits: JointLimitLagrangianConstraint
+///            (Lagrange multipliers, its stop torques an output) or JointLimitConstraint (a
+///            projective clamp), as `jointLimits` says;
 ///   links/   MechanicalObject Rigid3d (a frame per link) mapped by ArticulatedMapping, with a
 ///            child node per visual mesh (a mesh loader, an OglModel and a RigidMapping).
 /// Relative mesh file names are relative to the URDF file; package://p/x is looked for as x and
@@ -57,11 +73,21 @@ class URDFLoader final : public Base, public SceneGenerator {
       "through the mappings."};
   Data<double> d_contactStiffness{this, "contactStiffness", 10.0,
                                   "contactStiffness of those collision models.", {.min = 0.0}};
+  Data<JointLimitMethod> d_jointLimits{
+      this, "jointLimits", JointLimitMethod::automatic,
+      "How the file's joint limits are enforced: lagrangian (JointLimitLagrangianConstraint: "
+      "multipliers, solved with the contacts; the robot's solver then needs a constraint "
+      "correction), projective (JointLimitConstraint: a clamp), none, or auto: lagrangian when "
+      "the root node holds a constraint solver (FreeMotionAnimationLoop), else projective."};
   Data<std::vector<std::string>> d_jointNames{
       this, "jointNames", {}, "Name of each joint value, in the order of the joint state (output).",
       {.output = true}};
 
   bool generateScene(SceneElement& node) override;
+
+ private:
+  /// jointLimits, `auto` resolved.
+  JointLimitMethod limitMethod() const;
 };
 
 }  // namespace stroma

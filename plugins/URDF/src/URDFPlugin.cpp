@@ -3,6 +3,7 @@
 #include "ArticulatedMapping.h"
 #include "JointActuatorForceField.h"
 #include "JointLimitConstraint.h"
+#include "JointLimitLagrangianConstraint.h"
 #include "URDFLoader.h"
 #include "core/Plugin.h"
 
@@ -21,6 +22,9 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .with<JointActuatorForceField>("Vec1d");
   registry.add("JointLimitConstraint", "Joint values clamped to their range (an inelastic stop)")
       .with<JointLimitConstraint>("Vec1d");
+  registry.add("JointLimitLagrangianConstraint",
+               "Joint values kept in their range by Lagrange multipliers (the stop's torque out)")
+      .with<JointLimitLagrangianConstraint>();
 }
 
 }  // namespace
