@@ -87,6 +87,8 @@ bool checkElementIndices(Base& owner, const std::string& what,
   return false;
 }
 
+template bool checkElementIndices<3>(Base&, const std::string&, std::span<const Triangle>,
+                                     std::size_t);
 template bool checkElementIndices<4>(Base&, const std::string&, std::span<const Tetrahedron>,
                                      std::size_t);
 template bool checkElementIndices<8>(Base&, const std::string&, std::span<const Hexahedron>,

@@ -2,6 +2,7 @@
 #include "HexahedronFEMForceField.h"
 #include "HexahedronFEMForceFieldAndMass.h"
 #include "TetrahedronFEMForceField.h"
+#include "TriangularFEMForceField.h"
 #include "core/Plugin.h"
 
 namespace {
@@ -25,13 +26,23 @@ void registerComponents(stroma::PluginRegistry& registry) {
            "Corotational linear elasticity and the consistent or lumped mass of hexahedra")
       .with<HexahedronFEMForceFieldAndMass>("Vec3d")
       .alias("HexahedralFEMForceFieldAndMass");
+  // SOFA's TriangleFEMForceField and TriangularFEMForceFieldOptim are the same corotational
+  // constant-strain membrane with the same default method (large); each name's own attributes
+  // (thickness, planeStrain; restScale) are accepted under all three.
+  registry
+      .add("TriangularFEMForceField",
+           "Corotational linear elastic membrane on triangles (plane stress)")
+      .with<TriangularFEMForceField>("Vec3d")
+      .alias("TriangleFEMForceField")
+      .alias("TriangularFEMForceFieldOptim");
 }
 
 }  // namespace
 
 extern "C" STROMA_PLUGIN_EXPORT const stroma::PluginEntry* stroma_plugin_entry() {
   static const stroma::PluginEntry entry = stroma::makePluginEntry(
-      "SolidMechanics", "0.1.0", "Finite-element force fields (tetrahedra, hexahedra)",
+      "SolidMechanics", "0.1.0",
+      "Finite-element force fields (tetrahedra, hexahedra, membrane triangles)",
       registerComponents);
   return &entry;
 }
