@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "BoxConstraint.h"
+#include "FixedPlaneProjectiveConstraint.h"
 #include "FixedProjectiveConstraint.h"
+#include "LineProjectiveConstraint.h"
 #include "LinearMovementProjectiveConstraint.h"
 #include "PartialFixedProjectiveConstraint.h"
+#include "PlaneProjectiveConstraint.h"
+#include "PointProjectiveConstraint.h"
 #include "core/Plugin.h"
 
 namespace {
@@ -29,6 +33,20 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .with<LinearMovementProjectiveConstraint<Vec3Types>>("Vec3d")
       .with<LinearMovementProjectiveConstraint<Rigid3Types>>("Rigid3d")
       .alias("LinearMovementConstraint");
+  registry
+      .add("FixedPlaneProjectiveConstraint",
+           "Zeroes the displacement of points along a direction by projection")
+      .with<FixedPlaneProjectiveConstraint>("Vec3d")
+      .alias("FixedPlaneConstraint");
+  registry.add("PlaneProjectiveConstraint", "Keeps points on a plane by projection")
+      .with<PlaneProjectiveConstraint>("Vec3d")
+      .alias("ProjectToPlaneConstraint");
+  registry.add("LineProjectiveConstraint", "Keeps points on a line by projection")
+      .with<LineProjectiveConstraint>("Vec3d")
+      .alias("ProjectToLineConstraint");
+  registry.add("PointProjectiveConstraint", "Puts points at a point and keeps them there")
+      .with<PointProjectiveConstraint>("Vec3d")
+      .alias("ProjectToPointConstraint");
 }
 
 }  // namespace
