@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "ConstantForceField.h"
 #include "PlaneForceField.h"
+#include "TrianglePressureForceField.h"
 #include "core/Plugin.h"
 
 namespace {
@@ -15,6 +16,8 @@ void registerComponents(stroma::PluginRegistry& registry) {
   registry.add("PlaneForceField", "Penalty plane pushing points back to its free side")
       .with<PlaneForceField<Vec3Types>>("Vec3d")
       .with<PlaneForceField<Rigid3Types>>("Rigid3d");
+  registry.add("TrianglePressureForceField", "A pressure (force per unit area) on triangles")
+      .with<TrianglePressureForceField>("Vec3d");
 }
 
 }  // namespace
