@@ -49,20 +49,16 @@ void TrianglePressureForceField::init() {
 
 void TrianglePressureForceField::update() {
   if (!m_topology || !mstate()) return;
-  if (m_built && d_triangleList.version() == m_builtList &&
-      m_topology->revision() == m_builtTopology)
-    return;
+  if (m_built && m_topology->revision() == m_builtTopology) return;
   build();
 }
 
 void TrianglePressureForceField::build() {
   m_built = true;
-  m_builtList = d_triangleList.version();
   m_builtTopology = m_topology->revision();
   const auto& triangles = m_topology->triangles();
   const auto& list = d_triangleList.value();
-  // Checked first: the message's text allocates, and a list linked to a BoxROI that follows
-  // moving positions changes every step.
+  // Checked first: the message's text allocates.
   for (unsigned t : list)
     if (t >= triangles.size()) {
       reportIndicesOutOfRange(*this, list, triangles.size(), "triangleList",

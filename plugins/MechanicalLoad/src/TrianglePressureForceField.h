@@ -23,7 +23,9 @@ namespace stroma {
 /// (energy -f.x, no stiffness); otherwise A_t is the current area and the load follows the
 /// surface's stretching: K_ij = pressure (grad_j A_t)^T / 3 for the vertices i, j of t,
 /// grad_a A = (b - c) x n / 2 (n the unit normal of (a, b, c)), non-symmetric, no energy.
-/// A triangle list or a list change while running (a BoxROI, a cut) is picked up at the next
+/// `triangleList` is read at init (and reinit), as SOFA reads it: a BoxROI that follows the
+/// moving positions does not move the load (SOFA's TrianglePressureForceField.scn gives the same
+/// motion only so). A change of the topology's elements (a cut) rebuilds the list at the next
 /// force computation. Errors: a triangle index out of range of the topology, a triangle whose
 /// points are out of range of the state (both skipped), no topology.
 class TrianglePressureForceField final : public ForceField<Vec3Types> {
@@ -58,14 +60,14 @@ class TrianglePressureForceField final : public ForceField<Vec3Types> {
   const std::vector<double>& restAreas() const { return m_restAreas; }
 
  private:
-  /// Rebuilds the loaded triangles when the list or the topology changed since the last build.
+  /// Rebuilds the loaded triangles when the topology changed since the last build.
   void update();
   void build();
 
   const Topology* m_topology = nullptr;
   std::vector<Triangle> m_triangles;
   std::vector<double> m_restAreas;
-  std::uint64_t m_builtList = 0, m_builtTopology = 0;
+  std::uint64_t m_builtTopology = 0;
   bool m_built = false;
 };
 
