@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "MeshSpringForceField.h"
+#include "QuadBendingSprings.h"
+#include "QuadularBendingSprings.h"
+#include "RegularGridSpringForceField.h"
 #include "SpringForceField.h"
+#include "TriangularBendingSprings.h"
 #include "core/Plugin.h"
 
 namespace {
@@ -16,6 +20,23 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .with<MeshSpringForceField<Vec3Types>>("Vec3d")
       .with<MeshSpringForceField<Vec2Types>>("Vec2d")
       .with<MeshSpringForceField<Vec1Types>>("Vec1d");
+  registry
+      .add("TriangularBendingSprings",
+           "Springs between the vertices opposite each edge shared by two triangles")
+      .with<TriangularBendingSprings<Vec3Types>>("Vec3d")
+      .with<TriangularBendingSprings<Vec2Types>>("Vec2d");
+  registry.add("QuadularBendingSprings", "Springs across each edge shared by two quads, per edge")
+      .with<QuadularBendingSprings<Vec3Types>>("Vec3d")
+      .with<QuadularBendingSprings<Vec2Types>>("Vec2d");
+  registry.add("QuadBendingSprings", "Springs across the edges shared by two quads, each once")
+      .with<QuadBendingSprings<Vec3Types>>("Vec3d")
+      .with<QuadBendingSprings<Vec2Types>>("Vec2d");
+  registry
+      .add("RegularGridSpringForceField",
+           "Springs along the lines, face diagonals and cell diagonals of a grid")
+      .with<RegularGridSpringForceField<Vec3Types>>("Vec3d")
+      .with<RegularGridSpringForceField<Vec2Types>>("Vec2d")
+      .with<RegularGridSpringForceField<Vec1Types>>("Vec1d");
 }
 
 }  // namespace

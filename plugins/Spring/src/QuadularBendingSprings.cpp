@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+#include "QuadularBendingSprings.h"
+
+#include "SpringKernel.h"
+#include "SpringPairs.h"
+
+namespace stroma {
+
+template <class DataTypes>
+void QuadularBendingSprings<DataTypes>::init() {
+  ForceField<DataTypes>::init();
+  if (!this->mstate()) return;
+  m_topology = findSpringTopology(*this, l_topology, "quads");
+  if (!m_topology) return;
+  if (m_topology->quads().empty()) {
+    this->msgError("the topology " + m_topology->path() + " has no quads", "topology");
+    return;
+  }
+  build();
+}
+
+template <class DataTypes>
+void QuadularBendingSprings<DataTypes>::build() {
+  m_topologyRevision = m_topology->revision();
+  const std::size_t n = this->mstate()->size();
+  const VecCoord& rest = this->mstate()->readCoord(VecId::restPosition());
+  const VecCoord& x0 = rest.size() == n ? rest : this->mstate()->readCoord(VecId::position());
+
+  const BendingPairs found =
+      findQuadBendingPairs(m_topology->quads(), m_topology->quadEdges(), false);
+  const std::vector<Edge>& pairs = found.pairs;
+  std::vector<LinearSpring> springs;
+  const std::size_t outOfRange = appendSprings<kDimension>(
+      pairs, x0, d_stiffness.value(), d_damping.value(), false, false, springs);
+  if (outOfRange) {
+    this->msgError("the quads of " + m_topology->path() + " use points out of range of the " +
+                       std::to_string(n) + " points of " + this->mstate()->path() + " (" +
+                       std::to_string(outOfRange) + " springs)",
+                   "topology");
+    d_springs.setValue({});
+    return;
+  }
+  if (found.nonManifoldEdges)
+    this->msgWarning(std::to_string(found.nonManifoldEdges) +
+                         " edges have more than two quads: each got its springs from its first "
+                         "two quads",
+                     "topology");
+  d_springs.setValue(std::move(springs));
+}
+
+template <class DataTypes>
+void QuadularBendingSprings<DataTypes>::addForce(const MechanicalParams&, VecDeriv& f,
+                                                 const VecCoord& x, const VecDeriv& v) {
+  if (m_topology && this->isValid() && m_topology->revision() != m_topologyRevision) build();
+  addSpringForces(d_springs.value(), SpringStates<kDimension>{x, x}, v, v, f, f);
+}
+
+template <class DataTypes>
+void QuadularBendingSprings<DataTypes>::addDForce(const MechanicalParams& mp, VecDeriv& df,
+                                                  const VecDeriv& dx) {
+  const VecCoord& x = this->mstate()->readCoord(mp.x);
+  addSpringDForces(d_springs.value(), SpringStates<kDimension>{x, x}, dx, dx, df, df, mp.kFactor,
+                   mp.bFactor);
+}
+
+template <class DataTypes>
+void QuadularBendingSprings<DataTypes>::addKToMatrix(const MechanicalParams& mp,
+                                                     MatrixAccumulator& matrix,
+                                                     std::size_t offset) {
+  const VecCoord& x = this->mstate()->readCoord(mp.x);
+  addSpringMatrix(d_springs.value(), SpringStates<kDimension>{x, x}, matrix, offset, offset,
+                  mp.kFactor, mp.bFactor);
+}
+
+template <class DataTypes>
+double QuadularBendingSprings<DataTypes>::potentialEnergy(const MechanicalParams&,
+                                                          const VecCoord& x) const {
+  return springEnergy(d_springs.value(), SpringStates<kDimension>{x, x});
+}
+
+template class QuadularBendingSprings<Vec2Types>;
+template class QuadularBendingSprings<Vec3Types>;
+
+}  // namespace stroma
