@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "FastTriangularBendingSprings.h"
 #include "MeshSpringForceField.h"
 #include "QuadBendingSprings.h"
 #include "QuadularBendingSprings.h"
@@ -25,6 +26,10 @@ void registerComponents(stroma::PluginRegistry& registry) {
            "Springs between the vertices opposite each edge shared by two triangles")
       .with<TriangularBendingSprings<Vec3Types>>("Vec3d")
       .with<TriangularBendingSprings<Vec2Types>>("Vec2d");
+  registry
+      .add("FastTriangularBendingSprings",
+           "Linear bending energy of each pair of triangles sharing an edge")
+      .with<FastTriangularBendingSprings>("Vec3d");
   registry.add("QuadularBendingSprings", "Springs across each edge shared by two quads, per edge")
       .with<QuadularBendingSprings<Vec3Types>>("Vec3d")
       .with<QuadularBendingSprings<Vec2Types>>("Vec2d");
