@@ -95,6 +95,11 @@ const KnownGap kKnownGaps[] = {
     {"", "'..' goes above the root node", "src", "the scene links above its root; SOFA only warns"},
     {"SubsetTopology_refiningMesh.scn", "unknown attribute 'box_roi'", "box_roi",
      "the scene gives BoxConstraint an attribute that SOFA's lacks too; SOFA only warns"},
+    {"Select/", "unknown attribute 'triangleIndices'", "triangleIndices",
+     "the scene gives TrianglePressureForceField an attribute that SOFA's lacks too (it is "
+     "triangleList); SOFA only warns, and applies no pressure"},
+    {"TopoMap_cylinder3d.scn", "broken link '@boxSelection.triangleIndices'", "triangleList",
+     "the scene links to an object that does not exist (it is BoxROI); SOFA only warns"},
     {"Playback/", "file 'beamGravity.txt.gz' not found", "filename",
      "ReadState and CompareState read the file WriteState.scn writes; SOFA fails alike without it"},
 };
