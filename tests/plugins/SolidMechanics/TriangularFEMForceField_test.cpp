@@ -430,5 +430,28 @@ TEST(TriangularFEMForceField, SplitsQuadsIntoTwoTrianglesEach) {
   EXPECT_LT((forces[0] - forces[1]).norm(), 1e-12 * forces[0].norm());
 }
 
+TEST(TriangularFEMForceField, TakesTheStateOfAnAncestorNode) {
+  // As in SOFA's scenes with a Quad2TriangleTopologicalMapping: the state in the parent node,
+  // the triangles and the field in a child. The same forces as in one node.
+  Eigen::VectorXd forces[2];
+  const char* scenes[2] = {
+      "<Node name=\"root\"><MechanicalObject name=\"dofs\" position=\"0 0 0  1 0 0  0 1 0  1 1 "
+      "0\"/><MeshTopology triangles=\"0 1 3  0 3 2\"/><TriangularFEMForceField/></Node>",
+      "<Node name=\"root\"><MechanicalObject name=\"dofs\" position=\"0 0 0  1 0 0  0 1 0  1 1 "
+      "0\"/><Node name=\"T\"><MeshTopology triangles=\"0 1 3  0 3 2\"/>"
+      "<TriangularFEMForceField/></Node></Node>"};
+  for (int k = 0; k < 2; ++k) {
+    Runtime runtime;
+    Scene scene(runtime);
+    ASSERT_TRUE(loadQuietly(scene, scenes[k]));
+    std::vector<Vec3d>& x =
+        objectAt<MechanicalState<Vec3Types>>(scene, "@/dofs")->writeCoord(VecId::position());
+    x[3] += Vec3d(0.02, 0.01, 0.005);
+    forces[k] = computeForces(scene);
+  }
+  EXPECT_GT(forces[0].norm(), 1.0);
+  EXPECT_EQ(forces[0], forces[1]);
+}
+
 }  // namespace
 }  // namespace stroma::test
