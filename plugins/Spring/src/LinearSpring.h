@@ -18,9 +18,6 @@ struct LinearSpring {
   double kd = 0;                 ///< damping along the spring (N s/m)
   double restLength = 0;         ///< (m)
   bool elongationOnly = false;   ///< no force when shorter than the rest length
-  /// Damping on the whole relative velocity, kd (v2 - v1), instead of its part along the spring
-  /// (SOFA's RegularGridSpringForceField damps this way).
-  bool isotropicDamping = false;
   bool operator==(const LinearSpring&) const = default;
 };
 

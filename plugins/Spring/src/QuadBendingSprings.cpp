@@ -36,8 +36,8 @@ void QuadBendingSprings<DataTypes>::build() {
     pairs.push_back(p);
   }
   std::vector<LinearSpring> springs;
-  const std::size_t outOfRange = appendSprings<kDimension>(
-      pairs, x0, d_stiffness.value(), d_damping.value(), false, false, springs);
+  const std::size_t outOfRange =
+      appendSprings<kDimension>(pairs, x0, d_stiffness.value(), d_damping.value(), false, springs);
   if (outOfRange) {
     this->msgError("the quads of " + m_topology->path() + " use points out of range of the " +
                        std::to_string(n) + " points of " + this->mstate()->path() + " (" +

@@ -57,7 +57,7 @@ void RegularGridSpringForceField<DataTypes>::build() {
         std::tuple{&pairs.cellDiagonals, &d_cubesStiffness, &d_cubesDamping}}) {
     const double ks = valueOf(*stiffness, d_stiffness), kd = valueOf(*damping, d_damping);
     if (ks == 0 && kd == 0) continue;
-    outOfRange += appendSprings<kDimension>(*list, x0, ks, kd, true, true, springs);
+    outOfRange += appendSprings<kDimension>(*list, x0, ks, kd, true, springs);
   }
   if (outOfRange) {
     this->msgError("the elements of " + m_topology->path() + " use points out of range of the " +

@@ -20,10 +20,9 @@ namespace stroma {
 /// hexahedra, else of quads, else of edges: SpringPairs.h).
 ///
 /// As measured on SOFA (runSofa, this project's SOFA build): stiffness and damping are per unit
-/// length (a spring of rest length L gets ks = stiffness / L, kd = damping / L), the damping acts
-/// on the whole relative velocity of the two points (kd (v2 - v1), not only along the spring),
-/// and `stiffness` / `damping`, when given, set every kind, overriding the kinds' own values
-/// (a warning says so). Rest lengths are the distances between the grid's own points (the
+/// length (a spring of rest length L gets ks = stiffness / L, kd = damping / L), and
+/// `stiffness` / `damping`, when given, set every kind, overriding the kinds' own values (a
+/// warning says so). Rest lengths are the distances between the grid's own points (the
 /// topology's positions, as SOFA measures them on the grid), or between the state's rest
 /// positions when the topology has no point list of the state's size.
 ///

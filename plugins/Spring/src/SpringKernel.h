@@ -11,8 +11,6 @@
 //   df1/dv2 = Bs = kd e e^T
 // with df1/dp1 = -Ks, df2/dp2 = -Ks, df2/dp1 = Ks (and the same pattern for Bs). The position
 // derivative of the damping force is left out (it is not symmetric); it vanishes at rest.
-// An isotropic spring (LinearSpring::isotropicDamping) damps the whole relative velocity:
-// f1 += kd (v2 - v1), Bs = kd I.
 // Under compression (l < L) Ks is indefinite: that is the exact tangent, not an approximation.
 // A zero rest length gives the linear spring f1 = ks u, Ks = ks I, defined even at l = 0.
 //
@@ -92,10 +90,7 @@ SpringResponse<N> evaluateSpring(const LinearSpring& s, const Vec<N>& p1, const 
     r.force = s.ks * u;
     r.stiffness = s.ks * Matrix::Identity();
     r.energy = 0.5 * s.ks * u.squaredNorm();
-    if (s.isotropicDamping) {
-      r.force += s.kd * (v2 - v1);
-      r.damping = s.kd * Matrix::Identity();
-    } else if (l > tiny) {
+    if (l > tiny) {
       const Vec<N> e = u / l;
       r.force += s.kd * (v2 - v1).dot(e) * e;
       r.damping = s.kd * e * e.transpose();
@@ -106,14 +101,9 @@ SpringResponse<N> evaluateSpring(const LinearSpring& s, const Vec<N>& p1, const 
   const Vec<N> e = u / l;
   const Matrix eeT = e * e.transpose();
   const double stretch = l - s.restLength;
+  r.force = (s.ks * stretch + s.kd * (v2 - v1).dot(e)) * e;
   r.stiffness = s.ks * (eeT + (stretch / l) * (Matrix::Identity() - eeT));
-  if (s.isotropicDamping) {
-    r.force = s.ks * stretch * e + s.kd * (v2 - v1);
-    r.damping = s.kd * Matrix::Identity();
-  } else {
-    r.force = (s.ks * stretch + s.kd * (v2 - v1).dot(e)) * e;
-    r.damping = s.kd * eeT;
-  }
+  r.damping = s.kd * eeT;
   r.energy = 0.5 * s.ks * stretch * stretch;
   return r;
 }

@@ -76,8 +76,7 @@ const Topology* findSpringTopology(Base& owner, const Link<Topology>& link,
 /// were skipped for using a point past `rest` (the caller reports them).
 template <int N>
 std::size_t appendSprings(std::span<const Edge> pairs, const std::vector<Vec<N>>& rest, double ks,
-                          double kd, bool perLength, bool isotropicDamping,
-                          std::vector<LinearSpring>& springs) {
+                          double kd, bool perLength, std::vector<LinearSpring>& springs) {
   std::size_t outOfRange = 0;
   for (const Edge& p : pairs) {
     if (p[0] >= rest.size() || p[1] >= rest.size()) {
@@ -87,9 +86,7 @@ std::size_t appendSprings(std::span<const Edge> pairs, const std::vector<Vec<N>>
     if (p[0] == p[1]) continue;
     const double length = (rest[p[1]] - rest[p[0]]).norm();
     const double scale = perLength && length > 1e-12 ? 1 / length : 1.0;
-    LinearSpring s{p[0], p[1], ks * scale, kd * scale, length};
-    s.isotropicDamping = isotropicDamping;
-    springs.push_back(s);
+    springs.push_back({p[0], p[1], ks * scale, kd * scale, length});
   }
   return outOfRange;
 }

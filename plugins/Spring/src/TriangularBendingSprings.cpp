@@ -32,8 +32,8 @@ void TriangularBendingSprings<DataTypes>::build() {
   pairs.reserve(found.hinges.size());
   for (const TriangleHinge& h : found.hinges) pairs.push_back({h.b, h.d});
   std::vector<LinearSpring> springs;
-  const std::size_t outOfRange = appendSprings<kDimension>(
-      pairs, x0, d_stiffness.value(), d_damping.value(), false, false, springs);
+  const std::size_t outOfRange =
+      appendSprings<kDimension>(pairs, x0, d_stiffness.value(), d_damping.value(), false, springs);
   if (outOfRange) {
     this->msgError("the triangles of " + m_topology->path() + " use points out of range of the " +
                        std::to_string(n) + " points of " + this->mstate()->path() + " (" +
