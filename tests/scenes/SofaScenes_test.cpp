@@ -100,6 +100,8 @@ const KnownGap kKnownGaps[] = {
      "triangleList); SOFA only warns, and applies no pressure"},
     {"TopoMap_cylinder3d.scn", "broken link '@boxSelection.triangleIndices'", "triangleList",
      "the scene links to an object that does not exist (it is BoxROI); SOFA only warns"},
+    {"AttachProjectiveConstraint.scn", "two-way attachment", "twoWay",
+     "Constraint: AttachProjectiveConstraint's two-way attachment is not provided"},
     {"Playback/", "file 'beamGravity.txt.gz' not found", "filename",
      "ReadState and CompareState read the file WriteState.scn writes; SOFA fails alike without it"},
 };

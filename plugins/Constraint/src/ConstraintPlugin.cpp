@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "AttachProjectiveConstraint.h"
 #include "BoxConstraint.h"
 #include "FixedPlaneProjectiveConstraint.h"
 #include "FixedProjectiveConstraint.h"
@@ -47,6 +48,11 @@ void registerComponents(stroma::PluginRegistry& registry) {
   registry.add("PointProjectiveConstraint", "Puts points at a point and keeps them there")
       .with<PointProjectiveConstraint>("Vec3d")
       .alias("ProjectToPointConstraint");
+  registry
+      .add("AttachProjectiveConstraint",
+           "Attaches points of one state to points of another (one way) by projection")
+      .with<AttachProjectiveConstraint>("Vec3d")
+      .alias("AttachConstraint");
 }
 
 }  // namespace
