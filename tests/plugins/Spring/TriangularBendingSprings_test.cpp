@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-// TriangularBendingSprings: one spring between the vertices opposite each interior edge, at rest
-// on a flat sheet, the closed-form force of a folded pair (and SOFA's, measured), the generic
-// force-field test, a hanging cloth whose total potential energy (gravity + springs) is
-// stationary at rest and decreases monotonically under damping, a warm step that allocates
-// nothing, and bad input.
+// TriangularBendingSprings: one spring between the vertices opposite each interior edge (on the
+// state above when its node has none), at rest on a flat sheet, the closed-form force of a
+// folded pair (and SOFA's, measured), the generic force-field test, a hanging cloth whose total
+// potential energy (gravity + springs) is stationary at rest and decreases monotonically under
+// damping, a warm step that allocates nothing, and bad input.
 #include <gtest/gtest.h>
 
 #include "plugins/Spring/MechanicsTestSupport.h"
@@ -62,6 +62,24 @@ TEST(TriangularBendingSprings, FoldedPairGivesTheClosedFormSpringForce) {
   EXPECT_NEAR(f[4], 2.97769, 5e-6);
   EXPECT_NEAR(f[5], -0.297769, 5e-7);
   EXPECT_NEAR(check.energy(), 0.5 * 300 * (l - 2) * (l - 2), 1e-14);
+}
+
+TEST(TriangularBendingSprings, UnderATopologicalMappingActsOnTheStateAbove) {
+  // As in SOFA's scenes: the triangles in a child node without a state (where a topological
+  // mapping would put them), the springs on the parent's points.
+  SceneHolder s;
+  ASSERT_TRUE(s.load(R"(
+<Node name="root" gravity="0 0 0">
+  <MechanicalObject name="dofs" rest_position="0 0 0  1 -1 0  2 0 0  1 1 0"
+                    position="0 0 0  1 -1 0.3  2 0 0  1 1 0.1"/>
+  <Node name="T">
+    <MeshTopology triangles="0 1 2  0 2 3"/>
+    <TriangularBendingSprings name="bending" stiffness="300" damping="0"/>
+  </Node>
+</Node>)"));
+  EXPECT_EQ(numbers(s.text("@T/bending.spring")), (std::vector<double>{1, 3, 300, 0, 2}));
+  ForceFieldChecker check(s.scene(), s.root());
+  EXPECT_NEAR(check.force()[4], 2.97769, 5e-6);  // SOFA's, as above
 }
 
 TEST(TriangularBendingSprings, FlatSheetIsAtRest) {
