@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "AttachProjectiveConstraint.h"
 #include "BoxConstraint.h"
+#include "DirectionProjectiveConstraint.h"
 #include "FixedPlaneProjectiveConstraint.h"
 #include "FixedProjectiveConstraint.h"
 #include "LineProjectiveConstraint.h"
@@ -48,6 +49,11 @@ void registerComponents(stroma::PluginRegistry& registry) {
   registry.add("PointProjectiveConstraint", "Puts points at a point and keeps them there")
       .with<PointProjectiveConstraint>("Vec3d")
       .alias("ProjectToPointConstraint");
+  registry
+      .add("DirectionProjectiveConstraint",
+           "Lets points move only along a direction (on the line through where they start)")
+      .with<DirectionProjectiveConstraint>("Vec3d")
+      .alias("ProjectDirectionConstraint");
   registry
       .add("AttachProjectiveConstraint",
            "Attaches points of one state to points of another (one way) by projection")

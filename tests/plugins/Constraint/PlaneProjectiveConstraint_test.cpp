@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-// PlaneProjectiveConstraint, LineProjectiveConstraint and PointProjectiveConstraint: a point
-// under gravity slides on the plane (on the line) with the projected acceleration P g, exactly
-// as backward Euler gives it; a point off the plane is put on it; a point goes to `point`; the
-// assembled path (SparseLDLSolver) agrees for axis-aligned constraints and warns for oblique
-// ones; bad input is reported.
+// PlaneProjectiveConstraint, LineProjectiveConstraint, DirectionProjectiveConstraint and
+// PointProjectiveConstraint: a point under gravity slides on the plane (on the line, along the
+// direction) with the projected acceleration P g, exactly as backward Euler gives it; a point
+// off the plane is put on it; a point goes to `point`; the assembled path (SparseLDLSolver)
+// agrees for axis-aligned constraints and warns for oblique ones; bad input is reported.
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -118,6 +118,34 @@ TEST(LineProjectiveConstraint, AssembledSolveAgreesForAnAxisDirection) {
   EXPECT_EQ(rows, (std::vector<std::size_t>{3, 5}));
 }
 
+TEST(DirectionProjectiveConstraint, PointSlidesAlongTheDirectionThroughWhereItStarts) {
+  const Vec3d g(1, -10, 2), d = Vec3d(2, -1, 2) / 3, x0(1, 2, 3);
+  for (const char* solver : {kMatrixFree, kAssembled}) {
+    SceneHolder s;
+    ASSERT_TRUE(s.load(scene(solver, R"(<DirectionProjectiveConstraint indices="0"
+        direction="2 -1 2"/>)",
+                             "1 2 3  1 1 1"),
+                       false));
+    // Oblique: the assembled path warns at its first assembly (not checked here).
+    for (int i = 0; i < 10; ++i) ASSERT_TRUE(s.scene().step());
+    const auto x = numbers(s.text("@dofs.position"));
+    EXPECT_LT(d.cross(point(x, 0) - x0).norm(), 1e-14);  // on its line
+    if (solver == kMatrixFree)  // the exact constrained motion: the projected gravity
+      EXPECT_LT((point(x, 0) - fallen(x0, d.dot(g) * d, 10)).norm(), 1e-12);
+  }
+  SceneHolder s;
+  ASSERT_TRUE(s.load(scene(kAssembled, R"(<DirectionProjectiveConstraint name="c" indices="1"
+      direction="0 0 -3"/>)")));
+  ASSERT_TRUE(s.step(10));
+  EXPECT_LT(
+      (point(numbers(s.text("@dofs.position")), 1) - fallen(Vec3d(1, 1, 1), Vec3d(0, 0, 2), 10))
+          .norm(),
+      1e-12);
+  std::vector<std::size_t> rows;
+  s.get<BaseProjectiveConstraint>("@c")->fixedRows(rows);
+  EXPECT_EQ(rows, (std::vector<std::size_t>{3, 4}));
+}
+
 TEST(PointProjectiveConstraint, PointGoesToItsPointAndStays) {
   SceneHolder s;
   ASSERT_TRUE(s.load(scene(kAssembled, R"(<PointProjectiveConstraint name="c" indices="1"
@@ -148,7 +176,9 @@ TEST(PlaneProjectiveConstraint, ProjectionsOfEachComponentAreIdempotentAndOrthog
       {R"(<PointProjectiveConstraint name="c" indices="0 2"/>)",
        [&](const Vec3d& v) { return v.norm(); }},
       {R"(<FixedPlaneProjectiveConstraint name="c" indices="0 2" direction="1 2 2"/>)",
-       [&](const Vec3d& v) { return std::abs(n.dot(v)); }}};
+       [&](const Vec3d& v) { return std::abs(n.dot(v)); }},
+      {R"(<DirectionProjectiveConstraint name="c" indices="0 2" direction="1 2 2"/>)",
+       [&](const Vec3d& v) { return n.cross(v).norm(); }}};
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1, 1);
   for (const Case& c : cases) {
