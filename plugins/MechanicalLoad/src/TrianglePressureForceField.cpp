@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "TrianglePressureForceField.h"
 
+#include <algorithm>
 #include <string>
 
 #include "core/IndexChecks.h"
@@ -49,8 +50,30 @@ void TrianglePressureForceField::init() {
 
 void TrianglePressureForceField::update() {
   if (!m_topology || !mstate()) return;
-  if (m_built && m_topology->revision() == m_builtTopology) return;
-  build();
+  if (!m_built) return build();
+  if (m_topology->revision() != m_builtTopology) dropRemovedTriangles();
+}
+
+void TrianglePressureForceField::dropRemovedTriangles() {
+  m_builtTopology = m_topology->revision();
+  // The list's indices were renumbered by the change; the points were not (a cut keeps them):
+  // a loaded triangle is kept while the topology still has it, whatever its new index.
+  auto key = [](Triangle t) {
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  std::vector<Triangle> present;
+  present.reserve(m_topology->triangles().size());
+  for (const Triangle& t : m_topology->triangles()) present.push_back(key(t));
+  std::sort(present.begin(), present.end());
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < m_triangles.size(); ++t)
+    if (std::binary_search(present.begin(), present.end(), key(m_triangles[t]))) {
+      m_triangles[kept] = m_triangles[t];
+      m_restAreas[kept++] = m_restAreas[t];
+    }
+  m_triangles.resize(kept);
+  m_restAreas.resize(kept);
 }
 
 void TrianglePressureForceField::build() {

@@ -25,9 +25,10 @@ namespace stroma {
 /// grad_a A = (b - c) x n / 2 (n the unit normal of (a, b, c)), non-symmetric, no energy.
 /// `triangleList` is read at init (and reinit), as SOFA reads it: a BoxROI that follows the
 /// moving positions does not move the load (SOFA's TrianglePressureForceField.scn gives the same
-/// motion only so). A change of the topology's elements (a cut) rebuilds the list at the next
-/// force computation. Errors: a triangle index out of range of the topology, a triangle whose
-/// points are out of range of the state (both skipped), no topology.
+/// motion only so). When the topology's triangles change (a cut), the loaded triangles it no
+/// longer has are dropped at the next force computation, the others kept whatever their new
+/// index; triangles it gains are not loaded. Errors: a triangle index out of range of the topology,
+/// a triangle whose points are out of range of the state (both skipped), no topology.
 class TrianglePressureForceField final : public ForceField<Vec3Types> {
  public:
   Data<Vec3d> d_pressure{this,
@@ -60,9 +61,11 @@ class TrianglePressureForceField final : public ForceField<Vec3Types> {
   const std::vector<double>& restAreas() const { return m_restAreas; }
 
  private:
-  /// Rebuilds the loaded triangles when the topology changed since the last build.
+  /// Builds the loaded triangles at init; after a change of the topology, drops those it no
+  /// longer has.
   void update();
   void build();
+  void dropRemovedTriangles();
 
   const Topology* m_topology = nullptr;
   std::vector<Triangle> m_triangles;

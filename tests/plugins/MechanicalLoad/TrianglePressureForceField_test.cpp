@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // TrianglePressureForceField: the forces on a flat square sum to pressure times its area, a
 // third of each triangle's share on each of its vertices; a free plate's centre of mass
-// accelerates at p A / M; the state and topology may be in a parent node (SOFA's scenes); with
+// accelerates at p A / M; the state and topology may be in a parent node (SOFA's scenes); the
+// triangles a topology loses are dropped, the others kept through the renumbering; with
 // useConstantForce="0" the load follows the current area and its stiffness matches finite
 // differences (generic force-field test, as for the constant load); bad input is reported.
 #include <gtest/gtest.h>
@@ -73,6 +74,31 @@ TEST(TrianglePressureForceField, ConstantForceUsesTheRestAreaCurrentAreaFollowsT
   SceneHolder t;
   ASSERT_TRUE(t.load(squareScene("0 0 1", R"(useConstantForce="0")", stretched)));
   EXPECT_NEAR(forceOf(t).sum(), 6, 1e-14);
+}
+
+TEST(TrianglePressureForceField, TrianglesTheTopologyLosesAreDropped) {
+  SceneHolder s;
+  ASSERT_TRUE(s.load(squareScene("0 0 1")));
+  EXPECT_NEAR(forceOf(s).sum(), 4, 1e-14);
+  // The first triangle removed: the second one is now triangle 0, and still loaded.
+  s.set("@surface/triangles.triangles", "0 2 3");
+  const Eigen::VectorXd f = forceOf(s);
+  EXPECT_NEAR(f.sum(), 2, 1e-14);
+  EXPECT_EQ(f[5], 0);                  // point 1 (z: f[5]) is no longer loaded
+  EXPECT_NEAR(f[11], 2.0 / 3, 1e-14);  // point 3 is, a third of p A = 2
+  // Renumbered without loss: the loaded triangle (0 1 2), now triangle 1, stays loaded.
+  std::string xml = squareScene("0 0 1");
+  xml.replace(xml.find(R"(triangleList="0 1")"), 18, R"(triangleList="0")");
+  SceneHolder t;
+  ASSERT_TRUE(t.load(xml));
+  t.set("@surface/triangles.triangles", "0 2 3  0 1 2");
+  const Eigen::VectorXd g = forceOf(t);
+  EXPECT_NEAR(g[5], 2.0 / 3, 1e-14);
+  EXPECT_EQ(g[11], 0);
+  for (SceneHolder* h : {&s, &t})
+    for (const Message& m : h->scene().log().messages())
+      EXPECT_TRUE(m.level != MessageLevel::warning && m.level != MessageLevel::error)
+          << formatForConsole(m);
 }
 
 TEST(TrianglePressureForceField, PassesTheForceFieldTest) {
