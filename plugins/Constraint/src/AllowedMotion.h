@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The motions a constrained point may take, as an orthogonal projector: the kernel of the
 // projective constraints that keep points on a plane, on a line or at a point
-// (PlaneProjectiveConstraint, LineProjectiveConstraint, PointProjectiveConstraint) or that zero
-// one direction of their displacement (FixedPlaneProjectiveConstraint).
+// (PlaneProjectiveConstraint, LineProjectiveConstraint, PointProjectiveConstraint), let them
+// move along one direction only (DirectionProjectiveConstraint) or zero one direction of their
+// displacement (FixedPlaneProjectiveConstraint).
 //
 // P is the 3x3 orthogonal projector on the allowed displacements: symmetric and idempotent
 // (P P = P), so that projecting twice changes nothing and P v is the allowed vector nearest to v.
