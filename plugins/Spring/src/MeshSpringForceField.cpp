@@ -120,15 +120,17 @@ template <class DataTypes>
 void MeshSpringForceField<DataTypes>::addDForce(const MechanicalParams& mp, VecDeriv& df,
                                                 const VecDeriv& dx) {
   const VecCoord& x = this->mstate()->readCoord(mp.x);
-  addSpringDForces(d_springs.value(), SpringStates<kDimension>{x, x}, dx, dx, df, df, mp.kFactor,
-                   mp.bFactor);
+  const VecDeriv& v = this->mstate()->readDeriv(mp.v);
+  addSpringDForces(d_springs.value(), SpringStates<kDimension>{x, x, &v, &v}, dx, dx, df, df,
+                   mp.kFactor, mp.bFactor);
 }
 
 template <class DataTypes>
 void MeshSpringForceField<DataTypes>::addKToMatrix(const MechanicalParams& mp,
                                                    MatrixAccumulator& matrix, std::size_t offset) {
   const VecCoord& x = this->mstate()->readCoord(mp.x);
-  addSpringMatrix(d_springs.value(), SpringStates<kDimension>{x, x}, matrix, offset, offset,
+  const VecDeriv& v = this->mstate()->readDeriv(mp.v);
+  addSpringMatrix(d_springs.value(), SpringStates<kDimension>{x, x, &v, &v}, matrix, offset, offset,
                   mp.kFactor, mp.bFactor);
 }
 

@@ -134,7 +134,8 @@ void SpringForceField<DataTypes>::accumulateForce(const MechanicalParams& mp, Ve
 template <class DataTypes>
 void SpringForceField<DataTypes>::accumulateDForce(const MechanicalParams& mp, VecId df, VecId dx) {
   if (!m_state1 || !m_state2) return;
-  const SpringStates<kDimension> x{m_state1->readCoord(mp.x), m_state2->readCoord(mp.x)};
+  const SpringStates<kDimension> x{m_state1->readCoord(mp.x), m_state2->readCoord(mp.x),
+                                   &m_state1->readDeriv(mp.v), &m_state2->readDeriv(mp.v)};
   addSpringDForces(springs(), x, m_state1->readDeriv(dx), m_state2->readDeriv(dx),
                    m_state1->writeDeriv(df), m_state2->writeDeriv(df), mp.kFactor, mp.bFactor);
 }
@@ -156,7 +157,8 @@ void SpringForceField<DataTypes>::accumulateKMatrix(const MechanicalParams& mp,
     }
     return;
   }
-  const SpringStates<kDimension> x{m_state1->readCoord(mp.x), m_state2->readCoord(mp.x)};
+  const SpringStates<kDimension> x{m_state1->readCoord(mp.x), m_state2->readCoord(mp.x),
+                                   &m_state1->readDeriv(mp.v), &m_state2->readDeriv(mp.v)};
   addSpringMatrix(springs(), x, matrix, offset1, offset2, mp.kFactor, mp.bFactor);
 }
 

@@ -10,7 +10,12 @@
 //                                                           term being the geometric one)
 //   df1/dv2 = Bs = kd e e^T
 // with df1/dp1 = -Ks, df2/dp2 = -Ks, df2/dp1 = Ks (and the same pattern for Bs). The position
-// derivative of the damping force is left out (it is not symmetric); it vanishes at rest.
+// derivative of the damping force, kd [ s (I - e e^T) + e (v2 - v1)^T (I - e e^T) ] / l with
+// s = (v2 - v1).e, has a symmetric part that Ks keeps, as SOFA's springs do (their geometric
+// term is (ks (l - L) + kd s) / l: measured with runSofa, 5e-7), and a non-symmetric part that
+// is left out; both vanish at zero relative velocity, so the tangent is exact for a spring at
+// rest or without damping. The velocities come with the positions (SpringStates), zero when
+// not given.
 // Under compression (l < L) Ks is indefinite: that is the exact tangent, not an approximation.
 // A zero rest length gives the linear spring f1 = ks u, Ks = ks I, defined even at l = 0.
 //
@@ -51,6 +56,9 @@ template <int N>
 struct SpringStates {
   const std::vector<Vec<N>>& x1;
   const std::vector<Vec<N>>& x2;
+  /// Velocities of the two states, for the damping part of the tangent (null: zero).
+  const std::vector<Vec<N>>* v1 = nullptr;
+  const std::vector<Vec<N>>* v2 = nullptr;
 };
 
 /// f += spring forces at (x, v); returns the elastic energy.
@@ -58,7 +66,7 @@ template <int N>
 double addSpringForces(const std::vector<LinearSpring>& springs, const SpringStates<N>& x,
                        const std::vector<Vec<N>>& v1, const std::vector<Vec<N>>& v2,
                        std::vector<Vec<N>>& f1, std::vector<Vec<N>>& f2);
-/// df += kFactor K dx + bFactor B dx at positions x.
+/// df += kFactor K dx + bFactor B dx at positions x (and velocities, when x has them).
 template <int N>
 void addSpringDForces(const std::vector<LinearSpring>& springs, const SpringStates<N>& x,
                       const std::vector<Vec<N>>& dx1, const std::vector<Vec<N>>& dx2,
@@ -92,8 +100,11 @@ SpringResponse<N> evaluateSpring(const LinearSpring& s, const Vec<N>& p1, const 
     r.energy = 0.5 * s.ks * u.squaredNorm();
     if (l > tiny) {
       const Vec<N> e = u / l;
-      r.force += s.kd * (v2 - v1).dot(e) * e;
-      r.damping = s.kd * e * e.transpose();
+      const Matrix eeT = e * e.transpose();
+      const double dampingForce = s.kd * (v2 - v1).dot(e);
+      r.force += dampingForce * e;
+      r.stiffness += (dampingForce / l) * (Matrix::Identity() - eeT);
+      r.damping = s.kd * eeT;
     }
     return r;
   }
@@ -101,14 +112,20 @@ SpringResponse<N> evaluateSpring(const LinearSpring& s, const Vec<N>& p1, const 
   const Vec<N> e = u / l;
   const Matrix eeT = e * e.transpose();
   const double stretch = l - s.restLength;
-  r.force = (s.ks * stretch + s.kd * (v2 - v1).dot(e)) * e;
-  r.stiffness = s.ks * (eeT + (stretch / l) * (Matrix::Identity() - eeT));
+  const double intensity = s.ks * stretch + s.kd * (v2 - v1).dot(e);
+  r.force = intensity * e;
+  r.stiffness = s.ks * eeT + (intensity / l) * (Matrix::Identity() - eeT);
   r.damping = s.kd * eeT;
   r.energy = 0.5 * s.ks * stretch * stretch;
   return r;
 }
 
 namespace internal {
+// Point i's velocity, zero without velocities.
+template <int N>
+Vec<N> velocityOf(const std::vector<Vec<N>>* v, std::uint32_t i) {
+  return v && i < v->size() ? (*v)[i] : Vec<N>::Zero();
+}
 // Adds an N x N block at (row, col).
 template <int N>
 void addBlock(MatrixAccumulator& matrix, std::size_t row, std::size_t col,
@@ -140,9 +157,10 @@ void addSpringDForces(const std::vector<LinearSpring>& springs, const SpringStat
                       const std::vector<Vec<N>>& dx1, const std::vector<Vec<N>>& dx2,
                       std::vector<Vec<N>>& df1, std::vector<Vec<N>>& df2, double kFactor,
                       double bFactor) {
-  const Vec<N> zero = Vec<N>::Zero();
   for (const LinearSpring& s : springs) {
-    const SpringResponse<N> r = evaluateSpring<N>(s, x.x1[s.m1], x.x2[s.m2], zero, zero);
+    const SpringResponse<N> r =
+        evaluateSpring<N>(s, x.x1[s.m1], x.x2[s.m2], internal::velocityOf<N>(x.v1, s.m1),
+                          internal::velocityOf<N>(x.v2, s.m2));
     const Vec<N> d = dx2[s.m2] - dx1[s.m1];
     const Vec<N> df = kFactor * (r.stiffness * d) + bFactor * (r.damping * d);
     df1[s.m1] += df;
@@ -154,9 +172,10 @@ template <int N>
 void addSpringMatrix(const std::vector<LinearSpring>& springs, const SpringStates<N>& x,
                      MatrixAccumulator& matrix, std::size_t offset1, std::size_t offset2,
                      double kFactor, double bFactor) {
-  const Vec<N> zero = Vec<N>::Zero();
   for (const LinearSpring& s : springs) {
-    const SpringResponse<N> r = evaluateSpring<N>(s, x.x1[s.m1], x.x2[s.m2], zero, zero);
+    const SpringResponse<N> r =
+        evaluateSpring<N>(s, x.x1[s.m1], x.x2[s.m2], internal::velocityOf<N>(x.v1, s.m1),
+                          internal::velocityOf<N>(x.v2, s.m2));
     const typename SpringResponse<N>::Matrix K = kFactor * r.stiffness + bFactor * r.damping;
     const std::size_t row1 = offset1 + N * std::size_t{s.m1};
     const std::size_t row2 = offset2 + N * std::size_t{s.m2};
