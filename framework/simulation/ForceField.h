@@ -65,13 +65,20 @@ class ForceField : public Interface {
   using VecDeriv = std::vector<Deriv>;
   using State = MechanicalState<DataTypes>;
 
-  Link<State> l_mstate{this, "mstate", "The state it acts on (default: the node's)."};
+  Link<State> l_mstate{this, "mstate",
+                       "The state it acts on (default: the node's; in a node without a state, "
+                       "the nearest ancestor's, as SOFA's context)."};
 
   State* mstate() const { return l_mstate.get(); }
 
   /// Finds the state. Components that override init() call this first.
   void init() override {
-    if (!l_mstate) l_mstate.set(this->node() ? this->node()->template get<State>() : nullptr);
+    // SOFA's scenes put a field in a child node holding only the elements of a topological
+    // mapping (Quad2Triangle, Tetra2Triangle) under the node of its state.
+    if (!l_mstate && this->node())
+      l_mstate.set(this->node()->template get<BaseMechanicalState>()
+                       ? this->node()->template get<State>()
+                       : this->node()->template getUp<State>());
     if (!l_mstate)
       this->msgError(std::string("no mechanical state of template ") + DataTypes::name +
                      " in " + (this->node() ? this->node()->path() : std::string("?")));

@@ -110,6 +110,8 @@ const KnownGap kKnownGaps[] = {
      "Constraint: AttachProjectiveConstraint's two-way attachment is not provided"},
     {"Playback/", "file 'beamGravity.txt.gz' not found", "filename",
      "ReadState and CompareState read the file WriteState.scn writes; SOFA fails alike without it"},
+    {"TutorialForceFieldLiverTriangleFEM.scn", "mapping onto surfaces or lines is not supported",
+     "input_topology", "Mapping: BarycentricMapping onto triangles (a surface) is not provided"},
 };
 
 const KnownGap* knownGap(const fs::path& file, const Message& m) {

@@ -29,9 +29,6 @@ std::array<Vec3d, 3> areaGradients(const Vec3d& a, const Vec3d& b, const Vec3d& 
 }  // namespace
 
 void TrianglePressureForceField::init() {
-  // The state: the node's, else the nearest one up (SOFA's context lookup): the triangles
-  // usually live in a child node that has a topology but no state.
-  if (!l_mstate && node()) l_mstate.set(node()->getUp<State>());
   ForceField<Vec3Types>::init();
   m_topology = l_topology ? l_topology.get() : (node() ? node()->getUp<Topology>() : nullptr);
   if (!m_topology) {

@@ -35,10 +35,6 @@ std::string checkCount(std::size_t count, std::size_t triangles) {
 }  // namespace
 
 void TriangularFEMForceField::init() {
-  // The state: the link, else the node's, else the nearest ancestor's, as SOFA's context lookup
-  // (scenes put the membrane in a child node holding only the triangles of a topological
-  // mapping, under the node of the state).
-  if (!l_mstate && node() && !node()->get<State>()) l_mstate.set(node()->getUp<State>());
   ForceField<Vec3Types>::init();
   m_ready = false;
   if (!mstate()) return setInvalid();

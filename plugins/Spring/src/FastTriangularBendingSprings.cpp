@@ -8,8 +8,6 @@
 namespace stroma {
 
 void FastTriangularBendingSprings::init() {
-  // As SOFA: in a node without a state (under a topological mapping), the state above.
-  if (!l_mstate && node()) l_mstate.set(node()->getUp<State>());
   ForceField<Vec3Types>::init();
   if (!mstate()) return;
   m_topology = findSpringTopology(*this, l_topology, "triangles");

@@ -9,9 +9,6 @@ namespace stroma {
 
 template <class DataTypes>
 void QuadBendingSprings<DataTypes>::init() {
-  // As SOFA: in a node without a state (under a topological mapping), the state above.
-  using State = typename ForceField<DataTypes>::State;
-  if (!this->l_mstate && this->node()) this->l_mstate.set(this->node()->template getUp<State>());
   ForceField<DataTypes>::init();
   if (!this->mstate()) return;
   m_topology = findSpringTopology(*this, l_topology, "quads");
