@@ -16,7 +16,8 @@ class BehaviorUpdateVisitor final : public Visitor {
  public:
   explicit BehaviorUpdateVisitor(double dt) : m_dt(dt) {}
   Result processNodeTopDown(Node& node) override {
-    for (BehaviorModel* model : node.getAll<BehaviorModel>()) model->updatePosition(m_dt);
+    for (const auto& object : node.objects())
+      if (auto* model = dynamic_cast<BehaviorModel*>(object.get())) model->updatePosition(m_dt);
     return Result::carryOn;
   }
   std::string_view name() const override { return "behaviorUpdate"; }
@@ -31,9 +32,10 @@ class SolveVisitor final : public Visitor {
  public:
   SolveVisitor(double dt, Timing& timing) : m_dt(dt), m_timing(timing) {}
   Result processNodeTopDown(Node& node) override {
-    for (OdeSolver* solver : node.getAll<OdeSolver>()) {
-      if (!solver->isValid()) continue;
-      MechanicalOperations mop(node, m_timing, m_dt);
+    for (const auto& object : node.objects()) {  // not getAll: no list allocated per step
+      auto* solver = dynamic_cast<OdeSolver*>(object.get());
+      if (!solver || !solver->isValid()) continue;
+      MechanicalOperations& mop = solver->operations(node, m_timing, m_dt);
       if (!mop.hasState()) solver->reportNoState();
       // Constraints hold from the start of the step: a point fixed since the last step (its
       // indices changed) starts it at rest instead of drifting one step on its old velocity.

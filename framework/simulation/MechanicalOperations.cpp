@@ -16,8 +16,35 @@
 namespace stroma {
 
 MechanicalOperations::MechanicalOperations(Node& solverNode, Timing& timing, double dt)
-    : m_node(solverNode), m_timing(timing), m_dt(dt) {
-  collect(solverNode, true);
+    : m_node(&solverNode), m_timing(&timing), m_dt(dt) {
+  collectAll();
+}
+
+void MechanicalOperations::reset(Node& solverNode, Timing& timing, double dt) {
+  m_dt = dt;
+  m_timing = &timing;
+  std::size_t at = 0;
+  const bool unchanged = m_node == &solverNode && fingerprint(solverNode, true, at, true) &&
+                         at == m_fingerprint.size();
+  // Released on the states only while they are known to be alive (the graph unchanged).
+  freeTemporaries(unchanged);
+  if (unchanged) return;
+  m_node = &solverNode;
+  collectAll();
+}
+
+void MechanicalOperations::collectAll() {
+  m_states.clear();
+  m_independent.clear();
+  m_foreign.clear();
+  m_forceFields.clear();
+  m_masses.clear();
+  m_constraints.clear();
+  m_mappings.clear();
+  m_loadedMappings.clear();
+  m_offsets.clear();
+  m_systemSize = 0;
+  collect(*m_node, true);
   collectInteractions();
   for (BaseMechanicalState* s : m_states) {
     const bool mapped = std::any_of(m_mappings.begin(), m_mappings.end(),
@@ -28,6 +55,51 @@ MechanicalOperations::MechanicalOperations(Node& solverNode, Timing& timing, dou
     m_systemSize += s->matrixSize();
   }
   collectLoadedMappings();
+  m_stateOffsets = std::make_unique<StateOffsets>();
+  for (std::size_t i = 0; i < m_independent.size(); ++i)
+    m_stateOffsets->set(m_independent[i], m_offsets[i]);
+  std::size_t at = 0;
+  fingerprint(*m_node, true, at, false);
+  m_fingerprint.resize(at);
+}
+
+// What collect and collectInteractions read, as a sequence of words: each object's address and
+// validity, a state's size, a mapping's two ends, per node its activation and where its
+// objects end; then the ancestors' objects (interaction force fields, contact responses). The
+// same walk as collect, without allocating.
+bool MechanicalOperations::fingerprint(Node& node, bool isSolverNode, std::size_t& at,
+                                       bool compare) {
+  auto put = [&](std::uintptr_t word) {
+    if (compare) return at < m_fingerprint.size() && m_fingerprint[at++] == word;
+    if (at == m_fingerprint.size()) m_fingerprint.push_back(word);
+    else m_fingerprint[at] = word;
+    ++at;
+    return true;
+  };
+  auto putObjects = [&](const Node& n) {
+    for (const auto& object : n.objects()) {
+      const Base* o = object.get();
+      if (!put(reinterpret_cast<std::uintptr_t>(o)) || !put(o->isValid())) return false;
+      if (auto* s = dynamic_cast<const BaseMechanicalState*>(o); s && !put(s->matrixSize()))
+        return false;
+      if (auto* m = dynamic_cast<const BaseMapping*>(o))
+        if (!put(reinterpret_cast<std::uintptr_t>(m->toState())) ||
+            !put(reinterpret_cast<std::uintptr_t>(m->fromState())))
+          return false;
+    }
+    return put(0);
+  };
+  if (!put(reinterpret_cast<std::uintptr_t>(&node)) || !put(node.d_activated.value())) return false;
+  if (!node.d_activated.value()) return true;
+  if (!isSolverNode && node.get<OdeSolver>()) return true;
+  if (!putObjects(node)) return false;
+  for (const auto& child : node.children())
+    if (!fingerprint(*child, false, at, compare)) return false;
+  if (!put(0)) return false;
+  if (isSolverNode)
+    for (Node* n = node.parent(); n; n = n->parent())
+      if (!putObjects(*n)) return false;
+  return true;
 }
 
 // A mapping matters to forces and increments only when its output, or a state mapped further
@@ -36,10 +108,12 @@ MechanicalOperations::MechanicalOperations(Node& solverNode, Timing& timing, dou
 // (it was 76 % of a step of a grid with a 21,000-point surface). Positions and velocities still
 // follow every mapping in propagate().
 void MechanicalOperations::collectLoadedMappings() {
-  std::vector<const BaseMechanicalState*> loaded;
+  std::vector<const BaseMechanicalState*>& loaded = m_loadedScratch;
+  loaded.clear();
   for (const BaseForceField* ff : m_forceFields)
     for (const BaseMechanicalState* s : ff->states()) loaded.push_back(s);
-  std::vector<char> needed(m_mappings.size(), 0);
+  std::vector<char>& needed = m_neededScratch;
+  needed.assign(m_mappings.size(), 0);
   for (bool grew = true; grew;) {
     grew = false;
     for (std::size_t i = 0; i < m_mappings.size(); ++i) {
@@ -55,11 +129,19 @@ void MechanicalOperations::collectLoadedMappings() {
     if (needed[i]) m_loadedMappings.push_back(m_mappings[i]);
 }
 
-MechanicalOperations::~MechanicalOperations() {
-  for (VecId v : m_temporaries) {
-    for (BaseMechanicalState* s : m_states) s->vFree(v);
-    for (BaseMechanicalState* s : m_foreign) s->vFree(v);
-  }
+// A solver's operations end with the scene, after some of its states may be gone: they are
+// not touched then (vFree only lets a state reuse the vector's storage).
+MechanicalOperations::~MechanicalOperations() { freeTemporaries(false); }
+
+void MechanicalOperations::freeTemporaries(bool onStates) {
+  if (onStates)
+    for (VecId v : m_temporaries) {
+      for (BaseMechanicalState* s : m_states) s->vFree(v);
+      for (BaseMechanicalState* s : m_foreign) s->vFree(v);
+    }
+  m_temporaries.clear();
+  m_nextCoord = VecId::kFirstTemporary;
+  m_nextDeriv = VecId::kFirstTemporary;
 }
 
 void MechanicalOperations::collectInteractions() {
@@ -67,7 +149,7 @@ void MechanicalOperations::collectInteractions() {
     return std::find(m_states.begin(), m_states.end(), s) != m_states.end();
   };
   // Force fields of the ancestors that act on one of this solver's states.
-  for (Node* n = m_node.parent(); n; n = n->parent())
+  for (Node* n = m_node->parent(); n; n = n->parent())
     for (const auto& object : n->objects()) {
       auto* ff = dynamic_cast<BaseForceField*>(object.get());
       if (!ff || !ff->isValid()) continue;
@@ -97,7 +179,7 @@ void MechanicalOperations::collect(Node& node, bool isSolverNode) {
   for (const auto& child : node.children()) collect(*child, false);
 }
 
-double MechanicalOperations::time() const { return m_node.time(); }
+double MechanicalOperations::time() const { return m_node->time(); }
 
 VecId MechanicalOperations::allocDeriv() {
   const VecId v = VecId::deriv(m_nextDeriv++);
@@ -139,7 +221,7 @@ void MechanicalOperations::clearOnAll(VecId v) {
 }
 
 void MechanicalOperations::computeForce(const MechanicalParams& mp, VecId f) {
-  ScopedPhase phase(m_timing, "computeForce");
+  ScopedPhase phase(*m_timing, "computeForce");
   clearOnAll(f);
   for (BaseForceField* ff : m_forceFields) ff->accumulateForce(mp, f);
   for (auto it = m_loadedMappings.rbegin(); it != m_loadedMappings.rend(); ++it)
@@ -151,7 +233,7 @@ void MechanicalOperations::propagateDx(VecId dx) {
 }
 
 void MechanicalOperations::computeMBKdx(const MechanicalParams& mp, VecId out, VecId dx) {
-  ScopedPhase phase(m_timing, "computeMBKdx");
+  ScopedPhase phase(*m_timing, "computeMBKdx");
   propagateDx(dx);
   clearOnAll(out);
   if (mp.kFactor != 0 || mp.bFactor != 0)
@@ -193,7 +275,7 @@ void MechanicalOperations::projectVelocity(VecId v) {
 }
 
 void MechanicalOperations::propagate(VecId x, VecId v) {
-  ScopedPhase phase(m_timing, "mappings");
+  ScopedPhase phase(*m_timing, "mappings");
   for (BaseMapping* m : m_mappings) {
     m->applyPositions(x, x);
     m->applyVelocities(v, v);
@@ -202,7 +284,7 @@ void MechanicalOperations::propagate(VecId x, VecId v) {
 
 void MechanicalOperations::fixedGlobalRows(std::vector<char>& fixed) const {
   fixed.assign(m_systemSize, 0);
-  std::vector<std::size_t> rows;
+  std::vector<std::size_t>& rows = m_rowsScratch;
   for (const BaseProjectiveConstraint* c : m_constraints) {
     const auto it = std::find(m_independent.begin(), m_independent.end(), c->state());
     if (it == m_independent.end()) continue;
@@ -281,13 +363,12 @@ class ProjectedAccumulator final : public MatrixAccumulator {
 }  // namespace
 
 void MechanicalOperations::assemble(const MechanicalParams& mp, AssembledMatrix& A) {
-  ScopedPhase phase(m_timing, "assemble");
-  std::vector<char> fixed;
+  ScopedPhase phase(*m_timing, "assemble");
+  std::vector<char>& fixed = m_fixedScratch;
   fixedGlobalRows(fixed);
   A.begin(m_systemSize);
   ProjectedAccumulator projected(A, fixed);
-  StateOffsets offsets;
-  for (std::size_t i = 0; i < m_independent.size(); ++i) offsets.set(m_independent[i], m_offsets[i]);
+  const StateOffsets& offsets = *m_stateOffsets;
   for (BaseForceField* ff : m_forceFields)
     if (mp.kFactor != 0 || mp.bFactor != 0) ff->accumulateKMatrix(mp, projected, offsets);
   if (mp.mFactor != 0)
@@ -368,6 +449,15 @@ std::string MechanicalOperations::describeWorstVertex(VecId v, const std::string
   if (!worst.state) return "no state";
   return "vertex " + std::to_string(worst.index) + " of " + worst.state->path() + " (|" + what +
          "| component " + formatNumber(worst.value) + ")";
+}
+
+OdeSolver::OdeSolver() = default;
+OdeSolver::~OdeSolver() = default;
+
+MechanicalOperations& OdeSolver::operations(Node& node, Timing& timing, double dt) {
+  if (!m_operations) m_operations = std::make_unique<MechanicalOperations>(node, timing, dt);
+  else m_operations->reset(node, timing, dt);
+  return *m_operations;
 }
 
 }  // namespace stroma

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,7 @@ class BaseMass;
 class BaseMechanicalState;
 class BaseProjectiveConstraint;
 class Node;
+class StateOffsets;
 class Timing;
 
 /// The operations an ODE or linear solver performs on the whole mechanical system of its
@@ -40,11 +43,17 @@ class MechanicalOperations {
   /// positions and velocities at its end (see projectPosition).
   MechanicalOperations(Node& solverNode, Timing& timing, double dt = 0);
   ~MechanicalOperations();
+  /// Starts a new step with the same operations object (OdeSolver::operations keeps one per
+  /// solver): temporaries released, the time step and timing taken, and the states, force
+  /// fields, masses, constraints and mappings collected again only when the graph changed (an
+  /// object added, removed, (de)activated or invalid, a state resized, a mapping relinked). A
+  /// warm step thus allocates nothing here.
+  void reset(Node& solverNode, Timing& timing, double dt);
   MechanicalOperations(const MechanicalOperations&) = delete;
   MechanicalOperations& operator=(const MechanicalOperations&) = delete;
 
-  Node& node() const { return m_node; }
-  Timing& timing() const { return m_timing; }
+  Node& node() const { return *m_node; }
+  Timing& timing() const { return *m_timing; }
   /// Simulation time at the start of the step.
   double time() const;
   /// Simulation time at the end of the step: time() + dt.
@@ -58,8 +67,8 @@ class MechanicalOperations {
   /// assemble() replaces by identity rows).
   void fixedGlobalRows(std::vector<char>& fixed) const;
 
-  /// Temporary vectors on every state (independent and mapped), zeroed. Freed with freeVec
-  /// or when the operations end.
+  /// Temporary vectors on every state (independent and mapped), zeroed. Freed with freeVec,
+  /// at the next reset, or when the operations end (the states keep their storage).
   VecId allocDeriv();
   VecId allocCoord();
   void freeVec(VecId v);
@@ -125,13 +134,20 @@ class MechanicalOperations {
   bool independentOffset(const BaseMechanicalState* state, std::size_t& offset) const;
 
  private:
+  void collectAll();
   void collect(Node& node, bool isSolverNode);
+  /// Writes (or, with `compare`, checks against the last one) the fingerprint of what collect
+  /// reads: every object of the subtree and of the ancestors, with validity, state sizes and
+  /// mapping ends. Returns whether it is unchanged.
+  bool fingerprint(Node& node, bool isSolverNode, std::size_t& at, bool compare);
+  /// Forgets the temporaries, releasing them on the states when `onStates`.
+  void freeTemporaries(bool onStates);
   void collectInteractions();
   void collectLoadedMappings();
   void clearOnAll(VecId v);
 
-  Node& m_node;
-  Timing& m_timing;
+  Node* m_node;
+  Timing* m_timing;
   double m_dt = 0;
   std::vector<BaseMechanicalState*> m_states;       // all, top-down
   std::vector<BaseMechanicalState*> m_independent;  // not outputs of a mechanical mapping
@@ -144,6 +160,12 @@ class MechanicalOperations {
   std::vector<std::size_t> m_offsets;    // per independent state
   std::size_t m_systemSize = 0;
   std::vector<VecId> m_temporaries;
+  std::vector<std::uintptr_t> m_fingerprint;          // of the graph at the last collection
+  std::vector<const BaseMechanicalState*> m_loadedScratch;  // collectLoadedMappings' work
+  std::vector<char> m_neededScratch;
+  std::unique_ptr<StateOffsets> m_stateOffsets;  // of the independent states, for assembly
+  std::vector<char> m_fixedScratch;              // assemble's fixed rows
+  mutable std::vector<std::size_t> m_rowsScratch;  // fixedGlobalRows' rows of one constraint
   int m_nextCoord = VecId::kFirstTemporary;
   int m_nextDeriv = VecId::kFirstTemporary;
 };

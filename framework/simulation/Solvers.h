@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <memory>
 
 #include "core/Base.h"
 #include "core/Node.h"
@@ -11,6 +12,7 @@
 namespace stroma {
 
 class MechanicalOperations;
+class Timing;
 
 /// Integrates the states of its node's subtree over one time step (subtrees with their own
 /// solver excluded), through MechanicalOperations only.
@@ -18,7 +20,14 @@ struct ConstraintResponse;
 
 class OdeSolver : public Base {
  public:
+  OdeSolver();
+  ~OdeSolver() override;
   virtual void solve(MechanicalOperations& mop, double dt) = 0;
+
+  /// The operations on the system of its node (`node`, the solver's own) for a step of `dt`,
+  /// kept from step to step so that a warm step allocates nothing (MechanicalOperations::reset);
+  /// valid until the next call.
+  MechanicalOperations& operations(Node& node, Timing& timing, double dt);
 
   /// How its states answer a force held over a step of `dt` (Constraints.h), for the
   /// constraint corrections; false when the scheme has no such answer.
@@ -40,6 +49,7 @@ class OdeSolver : public Base {
 
  private:
   bool m_reportedNoState = false;
+  std::unique_ptr<MechanicalOperations> m_operations;
 };
 
 /// Outcome of a linear solve, reported to the log by the solver and returned to the caller.

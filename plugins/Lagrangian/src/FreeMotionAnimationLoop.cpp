@@ -16,7 +16,7 @@ using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
 struct FreeMotionAnimationLoop::SolverSystem {
   OdeSolver* solver = nullptr;
-  std::unique_ptr<MechanicalOperations> mop;
+  MechanicalOperations* mop = nullptr;  // the solver's own (OdeSolver::operations)
   BaseConstraintCorrection* correction = nullptr;
   ConstraintResponse response;
   RowMatrix H;          // the rows on the system's dofs, fixed columns dropped
@@ -90,7 +90,7 @@ void FreeMotionAnimationLoop::step(Node& root, double dt, Timing& timing) {
   {
     ScopedPhase phase(timing, "freeMotion");
     for (auto& [node, solver] : m_solvers) {
-      MechanicalOperations mop(*node, timing, dt);
+      MechanicalOperations& mop = solver->operations(*node, timing, dt);
       if (!mop.hasState()) solver->reportNoState();
       mop.projectVelocity(VecId::velocity());
       solver->solve(mop, dt);
@@ -131,7 +131,7 @@ bool FreeMotionAnimationLoop::solveConstraints(Node& root, double dt, Timing& ti
   for (auto& [node, solver] : m_solvers) {
     SolverSystem system;
     system.solver = solver;
-    system.mop = std::make_unique<MechanicalOperations>(*node, timing, dt);
+    system.mop = &solver->operations(*node, timing, dt);
     MechanicalOperations& mop = *system.mop;
     const auto n = static_cast<Eigen::Index>(mop.systemSize());
     system.H.resize(m, n);

@@ -27,18 +27,18 @@ bool isAssembledTemplate(const std::string& name) {
 
 // The DependentDofs hooks (T-nodes): projective constraints of the system that also interpolate
 // some of its independent dofs from others.
-std::vector<DependentDofs*> dependentDofs(const MechanicalOperations& mop) {
-  std::vector<DependentDofs*> found;
+void collectDependentDofs(const MechanicalOperations& mop, std::vector<DependentDofs*>& found) {
+  found.clear();
   const auto& states = mop.independentStates();
   for (BaseProjectiveConstraint* c : mop.constraints())
     if (auto* hook = dynamic_cast<DependentDofs*>(c);
         hook && std::find(states.begin(), states.end(), hook->dependentState()) != states.end())
       found.push_back(hook);
-  return found;
 }
 }  // namespace
 
 void CGLinearSolver::init() {
+  m_assembled = isAssembledTemplate(templateName());
   if (d_maxIter.isSet() && !d_iterations.isSet()) d_iterations.setValue(d_maxIter.value());
   if (d_smallDenominatorThreshold.isSet() && !d_threshold.isSet())
     d_threshold.setValue(d_smallDenominatorThreshold.value());
@@ -52,7 +52,7 @@ void CGLinearSolver::init() {
 
 LinearSolveReport CGLinearSolver::solve(MechanicalOperations& mop, const MechanicalParams& mp,
                                         VecId x, VecId rhs) {
-  const bool assembled = isAssembledTemplate(templateName());
+  const bool assembled = m_assembled;
   m_brokeDown = false;
   LinearSolveReport r =
       assembled ? solveAssembled(mop, mp, x, rhs) : solveMatrixFree(mop, mp, x, rhs);
@@ -63,7 +63,8 @@ LinearSolveReport CGLinearSolver::solve(MechanicalOperations& mop, const Mechani
 LinearSolveReport CGLinearSolver::solveMatrixFree(MechanicalOperations& mop,
                                                   const MechanicalParams& mp, VecId x, VecId rhs) {
   ScopedPhase phase(mop.timing(), "linearSolve");
-  const std::vector<DependentDofs*> dependent = dependentDofs(mop);
+  std::vector<DependentDofs*>& dependent = m_dependent;  // kept: no list allocated per solve
+  collectDependentDofs(mop, dependent);
   LinearSolveReport report;
   const VecId r = mop.allocDeriv(), p = mop.allocDeriv(), q = mop.allocDeriv();
   const double normB = mop.norm(rhs);

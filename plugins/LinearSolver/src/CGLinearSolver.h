@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <vector>
+
 #include "core/Link.h"
 #include "linalg/AssembledMatrix.h"
 #include "simulation/Solvers.h"
 
 namespace stroma {
+
+class DependentDofs;
 
 /// Conjugate gradient on (m M + b B + k K) x = rhs (SOFA's CGLinearSolver). The default
 /// template, GraphScattered, is matrix-free: each product goes through the force fields'
@@ -67,6 +71,8 @@ class CGLinearSolver final : public LinearSolver {
   void report(const LinearSolveReport& r);
 
   AssembledMatrix m_matrix;
+  bool m_assembled = false;  // the template is an assembled matrix (set at init)
+  std::vector<DependentDofs*> m_dependent;  // the T-node hooks of the last solve
   long long m_unconverged = 0;
   /// Why the last solve stopped short: p.Ap below `threshold` (or not finite), or not.
   bool m_brokeDown = false;

@@ -4,6 +4,7 @@
 #include <Eigen/SparseCholesky>
 #include <cstdint>
 
+#include "ReusingLDLT.h"
 #include "LdltCompliance.h"
 #include "core/Link.h"
 #include "linalg/AssembledMatrix.h"
@@ -48,7 +49,7 @@ class SparseLDLSolver final : public LinearSolver {
 
  private:
   AssembledMatrix m_matrix;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> m_ldlt;
+  ReusingLDLT m_ldlt;
   bool m_reportedIndefinite = false;
   bool m_factorized = false;  ///< the last solve left a usable factorization
   std::uint64_t m_analyzedRevision = 0;  ///< patternRevision() of the analysis; 0: none
