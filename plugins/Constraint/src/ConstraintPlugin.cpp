@@ -34,6 +34,7 @@ void registerComponents(stroma::PluginRegistry& registry) {
            "Moves points or rigid frames along a piecewise-linear trajectory")
       .with<LinearMovementProjectiveConstraint<Vec3Types>>("Vec3d")
       .with<LinearMovementProjectiveConstraint<Rigid3Types>>("Rigid3d")
+      .with<LinearMovementProjectiveConstraint<Vec1Types>>("Vec1d")
       .alias("LinearMovementConstraint");
   registry
       .add("FixedPlaneProjectiveConstraint",

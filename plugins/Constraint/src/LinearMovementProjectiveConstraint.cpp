@@ -95,8 +95,8 @@ auto LinearMovementProjectiveConstraint<DataTypes>::positionAt(std::size_t index
     x.orientation.normalize();
     return x;
   } else {
-    const Vec3d m = (1 - s) * a + s * b;
-    return relative ? Coord(m_x0[index] + m) : Coord(m);
+    const Coord m = (1 - s) * a + s * b;
+    return relative ? Coord(m_x0[index] + m) : m;
   }
 }
 
@@ -142,6 +142,7 @@ void LinearMovementProjectiveConstraint<DataTypes>::fixedRows(
   });
 }
 
+template class LinearMovementProjectiveConstraint<Vec1Types>;
 template class LinearMovementProjectiveConstraint<Vec3Types>;
 template class LinearMovementProjectiveConstraint<Rigid3Types>;
 

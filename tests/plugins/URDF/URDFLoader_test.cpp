@@ -60,6 +60,27 @@ TEST(URDFLoader, JointHeldAtItsLimitStaysOnIt) {
   EXPECT_NEAR(valuesAt(scene, "/root/arm/joints")[0], 0.2, 1e-12);
 }
 
+TEST(URDFLoader, ImposedJointMotionFollowsItsKeysAndDrivesTheRest) {
+  // Joint 1 turned from 0 to 0.5 rad between t = 0 and 1 s by LinearMovementConstraint on the
+  // joint values (Vec1d), joint 2 free: joint 1 is exactly on its ramp at every step, joint 2
+  // swings (gravity and the first link's motion).
+  RobotFolder folder;
+  Runtime runtime;
+  Scene scene(runtime);
+  ASSERT_TRUE(loadArm(scene, folder,
+                      armScene(folder, twoLinkArm(), "<EulerImplicitSolver/><SparseLDLSolver/>",
+                               "<LinearMovementConstraint template=\"Vec1d\" "
+                               "mstate=\"@arm/joints\" indices=\"0\" keyTimes=\"0 1 10\" "
+                               "movements=\"0  0.5  0.5\"/>")))
+      << problems(scene.log());
+  EXPECT_EQ(problems(scene.log()), "");
+  for (int i = 1; i <= 500; ++i) {
+    ASSERT_TRUE(scene.step()) << problems(scene.log());
+    ASSERT_NEAR(valuesAt(scene, "/root/arm/joints")[0], 0.5 * i * 1e-3, 1e-12) << "step " << i;
+  }
+  EXPECT_GT(std::abs(valuesAt(scene, "/root/arm/joints")[1]), 0.01);
+}
+
 TEST(URDFLoader, FloatingBaseFallsFreely) {
   RobotFolder folder;
   ArmOptions floating;
