@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "TetrahedraRemover.h"
+#include "TopologicalChangeProcessor.h"
 #include "core/Plugin.h"
 
 namespace {
@@ -11,6 +12,11 @@ void registerComponents(stroma::PluginRegistry& registry) {
            "Removes tetrahedra while the simulation runs: listed per time, in boxes, or swept by "
            "a moving tool segment")
       .with<TetrahedraRemover>();
+  registry
+      .add("TopologicalChangeProcessor",
+           "Applies the topological changes of a SOFA change file (REMOVE= of tetrahedra) at "
+           "their times")
+      .with<TopologicalChangeProcessor>();
 }
 
 }  // namespace
