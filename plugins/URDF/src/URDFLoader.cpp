@@ -14,6 +14,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "KinematicTree.h"
+#include "PrimitiveMeshes.h"
 #include "core/Node.h"
 #include "simulation/Constraints.h"
 
@@ -141,6 +142,30 @@ void addFloatingJoints(std::vector<TreeLink>& links, int parent, const RigidCoor
   }
 }
 
+// A box, cylinder or sphere of the file as a closed triangle mesh in its link's frame (placed
+// by `origin`); false for another geometry.
+bool primitiveMesh(const urdf::Geometry& geometry, const RigidCoord3& origin, PrimitiveMesh& mesh) {
+  if (geometry.type == urdf::Geometry::BOX)
+    mesh = boxMesh(toVec(static_cast<const urdf::Box&>(geometry).dim));
+  else if (geometry.type == urdf::Geometry::CYLINDER) {
+    const auto& c = static_cast<const urdf::Cylinder&>(geometry);
+    mesh = cylinderMesh(c.radius, c.length);
+  } else if (geometry.type == urdf::Geometry::SPHERE)
+    mesh = sphereMesh(static_cast<const urdf::Sphere&>(geometry).radius);
+  else
+    return false;
+  transformMesh(mesh, origin);
+  return true;
+}
+
+std::string pointsText(const PrimitiveMesh& mesh) { return joined(mesh.points, vec3); }
+
+std::string trianglesText(const PrimitiveMesh& mesh) {
+  return joined(mesh.triangles, [](const Vec3i& t) {
+    return std::to_string(t.x()) + " " + std::to_string(t.y()) + " " + std::to_string(t.z());
+  });
+}
+
 // The <collision> meshes and spheres of the links as collision models attached to their link's
 // frame (index i of links/frames).
 void addCollisionNodes(SceneElement& linkNode, const std::vector<TreeLink>& links,
@@ -185,8 +210,20 @@ void addCollisionNodes(SceneElement& linkNode, const std::vector<TreeLink>& link
         c.children.push_back(element(
             "SphereCollisionModel",
             {{"radius", number(sphere.radius)}, {"contactStiffness", stiffness}}));
+      } else if (PrimitiveMesh shape; primitiveMesh(*collision->geometry, origin, shape)) {
+        // A box or a cylinder: its closed triangle mesh, collided as a mesh file would be.
+        c.children.push_back(element("MeshTopology", {{"name", "topology"},
+                                                      {"position", pointsText(shape)},
+                                                      {"triangles", trianglesText(shape)}}));
+        c.children.push_back(element("MechanicalObject", {{"name", "points"},
+                                                          {"template", "Vec3d"},
+                                                          {"position", pointsText(shape)}}));
+        c.children.push_back(element("RigidMapping", mapping));
+        for (const char* model :
+             {"TriangleCollisionModel", "LineCollisionModel", "PointCollisionModel"})
+          c.children.push_back(element(model, {{"contactStiffness", stiffness}}));
       } else {
-        continue;  // boxes and cylinders: not yet
+        continue;
       }
       linkNode.children.push_back(std::move(c));
       ++count;
@@ -424,7 +461,29 @@ bool URDFLoader::generateScene(SceneElement& node) {
     if (!links[i].link) continue;
     int count = 0;
     for (const urdf::VisualSharedPtr& visual : links[i].link->visual_array) {
-      if (!visual || !visual->geometry || visual->geometry->type != urdf::Geometry::MESH) continue;
+      if (!visual || !visual->geometry) continue;
+      std::vector<SceneAttribute> model = {{"name", "visual"}};
+      if (visual->material && visual->material->color.a > 0) {
+        const urdf::Color& c = visual->material->color;
+        model.push_back({"color", number(c.r) + " " + number(c.g) + " " + number(c.b) + " " +
+                                      number(c.a)});
+      }
+      const std::string nodeName =
+          "visual_" + links[i].link->name + (count ? "_" + std::to_string(count) : "");
+      if (PrimitiveMesh shape; primitiveMesh(*visual->geometry, toFrame(visual->origin), shape)) {
+        // A box, cylinder or sphere: its triangles, drawn as a mesh file would be.
+        SceneElement v = element("Node", {{"name", nodeName}});
+        model.push_back({"position", pointsText(shape)});
+        model.push_back({"triangles", trianglesText(shape)});
+        v.children.push_back(element("OglModel", model));
+        v.children.push_back(element("RigidMapping", {{"input", "@../frames"},
+                                                      {"output", "@visual"},
+                                                      {"index", std::to_string(i)}}));
+        linkNode.children.push_back(std::move(v));
+        ++count;
+        continue;
+      }
+      if (visual->geometry->type != urdf::Geometry::MESH) continue;
       const auto& mesh = static_cast<const urdf::Mesh&>(*visual->geometry);
       // Beside the URDF, else by the name inside the package on Stroma's data path (the scene
       // loader looks for it there and reports it when missing).
@@ -434,20 +493,14 @@ bool URDFLoader::generateScene(SceneElement& node) {
       double roll = 0, pitch = 0, yaw = 0;
       visual->origin.rotation.getRPY(roll, pitch, yaw);
       const double deg = 180.0 / M_PI;
-      SceneElement v = element("Node", {{"name", "visual_" + links[i].link->name +
-                                                     (count ? "_" + std::to_string(count) : "")}});
+      SceneElement v = element("Node", {{"name", nodeName}});
       v.children.push_back(element(meshLoaderFor(meshFile),
                                    {{"name", "loader"},
                                     {"filename", meshFile.string()},
                                     {"scale3d", vec3(toVec(mesh.scale))},
                                     {"rotation", vec3(Vec3d(roll, pitch, yaw) * deg)},
                                     {"translation", vec3(origin.center)}}));
-      std::vector<SceneAttribute> model = {{"name", "visual"}, {"src", "@loader"}};
-      if (visual->material && visual->material->color.a > 0) {
-        const urdf::Color& c = visual->material->color;
-        model.push_back({"color", number(c.r) + " " + number(c.g) + " " + number(c.b) + " " +
-                                      number(c.a)});
-      }
+      model.push_back({"src", "@loader"});
       v.children.push_back(element("OglModel", model));
       v.children.push_back(element("RigidMapping", {{"input", "@../frames"},
                                                     {"output", "@visual"},

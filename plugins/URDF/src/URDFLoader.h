@@ -41,10 +41,11 @@ struct EnumKeywords<JointLimitMethod> {
 /// p/x in the URDF's folder and those above it; a mesh found nowhere there is looked for by the
 /// scene loader as p/x (relative to the scene, then on the data path, share/ included: a
 /// package is a folder there). OBJ and STL meshes use MeshOBJLoader and MeshSTLLoader, other
-/// formats MeshAssimpLoader. Box, cylinder and sphere geometries are not drawn. With
-/// collisionModels, each <collision> mesh becomes a child node of links/ (the mesh loader, a
-/// Vec3d state and its triangles, RigidMapping onto the link, Triangle, Line and Point
-/// collision models) and each sphere a SphereCollisionModel on a mapped point.
+/// formats MeshAssimpLoader; boxes, cylinders and spheres are drawn as their closed triangle
+/// meshes (PrimitiveMeshes.h). With collisionModels, each <collision> mesh, box or cylinder
+/// becomes a child node of links/ (its triangles, a Vec3d state, RigidMapping onto the link,
+/// Triangle, Line and Point collision models) and each sphere a SphereCollisionModel on a mapped
+/// point.
 ///
 /// The base link is fixed at the origin (fixedBase, default), unless fixedBase is false or the
 /// root joint is floating: then six joint values come first, x y z translations and rotations

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// URDFLoader collisionModels: a link's <collision> sphere and mesh become collision models on
-// points mapped to the link; the one-link pendulum swinging down under gravity is stopped by a
+// URDFLoader collisionModels: a link's <collision> sphere, mesh, box and cylinder become
+// collision models on points mapped to the link; the one-link pendulum swinging down under gravity is stopped by a
 // fixed sphere in its path (the contact force reaches the joint through the mappings), while
 // the mesh's points follow the link's frame.
 #include "plugins/URDF/URDFTestRobots.h"
@@ -24,7 +24,8 @@ const char* kPendulum = R"(<?xml version="1.0"?>
 </robot>
 )";
 
-double swing(bool obstacle) {
+// `tip`: the <geometry> of the collision at the link's tip (default the 3 cm sphere).
+double swing(bool obstacle, const std::string& tip = "") {
   RobotFolder folder;
   folder.write("triangle.obj", "v 0 0 0\nv 0.05 0 0\nv 0 0.05 0\nf 1 2 3\n");
   // The obstacle: 3 cm sphere where the tip passes at q = 0.8 rad.
@@ -43,7 +44,12 @@ double swing(bool obstacle) {
                      "\"/><SphereCollisionModel radius=\"0.03\" moving=\"false\" "
                      "simulated=\"false\"/></Node>"
                : "";
-  folder.write("robot.urdf", kPendulum);
+  std::string urdf = kPendulum;
+  if (!tip.empty()) {
+    const std::string sphere = "<sphere radius=\"0.03\"/>";
+    urdf.replace(urdf.find(sphere), sphere.size(), tip);
+  }
+  folder.write("robot.urdf", urdf);
   const std::string xml = "<Node name=\"root\" gravity=\"0 0 -9.81\" dt=\"0.001\">" + pipeline +
                           obstacleNode + "</Node>";
   Runtime runtime;
@@ -83,6 +89,21 @@ TEST(URDFCollision, ObstacleStopsTheSwingingLink) {
   EXPECT_GT(free, 1.2);                // it swings through the obstacle's place without it
   EXPECT_LT(stopped, 0.8 - 0.03 / 0.5);  // the two spheres overlap by less than a radius
   EXPECT_GT(stopped, 0.5);
+}
+
+TEST(URDFCollision, ObstacleStopsALinkCollidedAsABoxOrACylinder) {
+  // The tip as a 6 cm cube, then as a cylinder of radius 3 cm and length 6 cm (its axis along
+  // the link's z, in the plane of the swing): their triangles, edges and points meet the sphere.
+  for (const std::string& tip : {std::string("<box size=\"0.06 0.06 0.06\"/>"),
+                                std::string("<cylinder radius=\"0.03\" length=\"0.06\"/>")}) {
+    SCOPED_TRACE(tip);
+    const double free = swing(false, tip), stopped = swing(true, tip);
+    std::printf("%s: largest joint angle %.3f rad free, %.3f rad with the obstacle at 0.8 rad\n",
+                tip.c_str(), free, stopped);
+    EXPECT_GT(free, 1.2);
+    EXPECT_LT(stopped, 0.8 - 0.03 / 0.5);
+    EXPECT_GT(stopped, 0.5);
+  }
 }
 
 }  // namespace
