@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "CGImplicitSolver.h"
 #include "CentralDifferenceSolver.h"
 #include "EulerExplicitSolver.h"
 #include "EulerImplicitSolver.h"
@@ -19,6 +20,12 @@ void registerComponents(stroma::PluginRegistry& registry) {
            "Implicit Euler with Rayleigh damping, linearized or with Newton iterations")
       .with<EulerImplicitSolver>()
       .alias("EulerImplicit");
+  // SOFA reads its old CGImplicit element as an EulerImplicitSolver and a CGLinearSolver: the same
+  // model, here one component owning both (CGImplicitSolver.h).
+  registry
+      .add("CGImplicitSolver", "Implicit Euler with a conjugate gradient of its own (SOFA's older solver)")
+      .with<CGImplicitSolver>()
+      .alias("CGImplicit");
   registry
       .add("CentralDifferenceSolver",
            "Explicit central differences (leapfrog) with Rayleigh mass damping")
