@@ -47,7 +47,10 @@ bool ArticulatedMapping::setUp() {
     return false;
   }
   if (!sized(d_jointTypes.value().size(), d_jointTypes) ||
-      !sized(d_origins.value().size(), d_origins) || !sized(d_axes.value().size(), d_axes))
+      !sized(d_origins.value().size(), d_origins) || !sized(d_axes.value().size(), d_axes) ||
+      !sized(d_mimic.value().size(), d_mimic) ||
+      !sized(d_mimicMultipliers.value().size(), d_mimicMultipliers) ||
+      !sized(d_mimicOffsets.value().size(), d_mimicOffsets))
     return false;
   std::vector<KinematicJoint> joints(links);
   for (std::size_t i = 0; i < links; ++i) {
@@ -55,6 +58,9 @@ bool ArticulatedMapping::setUp() {
     j.parent = d_parents.value()[i];
     if (!d_origins.value().empty()) j.origin = d_origins.value()[i];
     if (!d_axes.value().empty()) j.axis = d_axes.value()[i];
+    if (!d_mimic.value().empty()) j.mimic = d_mimic.value()[i];
+    if (!d_mimicMultipliers.value().empty()) j.multiplier = d_mimicMultipliers.value()[i];
+    if (!d_mimicOffsets.value().empty()) j.offset = d_mimicOffsets.value()[i];
     if (!d_jointTypes.value().empty() && !jointTypeFromName(d_jointTypes.value()[i], j.type)) {
       msgError("unknown joint type '" + d_jointTypes.value()[i] + "' of link " +
                    std::to_string(i) + " (fixed, revolute, continuous or prismatic)",
@@ -68,7 +74,7 @@ bool ArticulatedMapping::setUp() {
   }
   std::string why;
   if (!m_tree.setJoints(std::move(joints), why)) {
-    msgError(why, "parents");
+    msgError(why, why.find("mimics") != std::string::npos ? "mimic" : "parents");
     return false;
   }
   m_tree.setBase(d_base.value());
@@ -115,14 +121,15 @@ void ArticulatedMapping::computeJacobian(const InVecCoord& q) {
     const Vec3d center = link.center + link.orientation * m_outputOffsets[k].center;
     m_tree.computePointJacobian(m_linkFrames, static_cast<int>(m_outputLinks[k]), center,
                                 m_columns);
-    m_tree.forEachMovingJointOnChain(static_cast<int>(m_outputLinks[k]), [&](int i) {
-      const int dof = m_tree.joints()[i].dof;
+    // Each value's column once (a mimic joint on the chain adds to its source's column).
+    for (std::size_t dof = 0; dof < m_columns.size(); ++dof) {
       const RigidDeriv3& c = m_columns[dof];
       for (int r = 0; r < 3; ++r) {
-        if (c.linear[r] != 0) m_triplets.emplace_back(6 * k + r, dof, c.linear[r]);
-        if (c.angular[r] != 0) m_triplets.emplace_back(6 * k + 3 + r, dof, c.angular[r]);
+        if (c.linear[r] != 0) m_triplets.emplace_back(6 * k + r, static_cast<int>(dof), c.linear[r]);
+        if (c.angular[r] != 0)
+          m_triplets.emplace_back(6 * k + 3 + r, static_cast<int>(dof), c.angular[r]);
       }
-    });
+    }
   }
   m_J.resize(static_cast<Eigen::Index>(6 * n), static_cast<Eigen::Index>(m_tree.dofCount()));
   m_J.setFromTriplets(m_triplets.begin(), m_triplets.end());

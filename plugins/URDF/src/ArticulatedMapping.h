@@ -39,6 +39,14 @@ class ArticulatedMapping final : public Mapping<Vec1Types, Rigid3Types> {
   Data<std::vector<Vec3d>> d_axes{this, "axes", {},
                                   "Axis of each link's joint in the joint frame (nbLinks x 3); "
                                   "default z."};
+  Data<std::vector<int>> d_mimic{
+      this, "mimic", {},
+      "Per link (nbLinks), the link whose joint value its joint follows (URDF's mimic joints: "
+      "no value of their own), or -1; default: none."};
+  Data<std::vector<double>> d_mimicMultipliers{
+      this, "mimicMultipliers", {}, "Per link (nbLinks): q = multiplier * q_source + offset."};
+  Data<std::vector<double>> d_mimicOffsets{this, "mimicOffsets", {},
+                                           "Per link (nbLinks): the offset (rad or m)."};
   Data<RigidCoord3> d_base{this, "base", RigidCoord3{},
                            "World frame of the base link ('x y z qx qy qz qw').", {.unit = "m"}};
   Data<std::vector<unsigned>> d_outputLinks{this, "outputLinks", {},

@@ -24,11 +24,30 @@ bool KinematicTree::setJoints(std::vector<KinematicJoint> joints, std::string& e
         return false;
       }
       j.axis /= n;
-      j.dof = static_cast<int>(m_dofCount++);
+      j.dof = j.mimic < 0 ? static_cast<int>(m_dofCount++) : -1;
     } else {
       j.dof = -1;
+      j.mimic = -1;
+    }
+    if (j.mimic < 0) {
+      j.multiplier = 1;
+      j.offset = 0;
     }
     j.origin.orientation.normalize();
+  }
+  // A mimic joint takes its source's value number (the source may come later in the tree).
+  for (std::size_t i = 0; i < joints.size(); ++i) {
+    KinematicJoint& j = joints[i];
+    if (j.mimic < 0) continue;
+    const bool valid = j.mimic < static_cast<int>(joints.size()) &&
+                       joints[static_cast<std::size_t>(j.mimic)].mimic < 0 &&
+                       joints[static_cast<std::size_t>(j.mimic)].dof >= 0;
+    if (!valid || !std::isfinite(j.multiplier) || !std::isfinite(j.offset)) {
+      error = "the joint of link " + std::to_string(i) + " mimics link " +
+              std::to_string(j.mimic) + ", whose joint is not an independent moving one";
+      return false;
+    }
+    j.dof = joints[static_cast<std::size_t>(j.mimic)].dof;
   }
   m_joints = std::move(joints);
   return true;
@@ -43,8 +62,9 @@ void KinematicTree::computeFrames(const std::vector<Vec1d>& q,
     // The joint frame in the world, then the joint's motion in it.
     Vec3d center = parent.center + parent.orientation * j.origin.center;
     Quat orientation = parent.orientation * j.origin.orientation;
-    const double value = j.dof >= 0 && static_cast<std::size_t>(j.dof) < q.size() ? q[j.dof][0]
-                                                                                  : 0.0;
+    const double value = j.dof >= 0 && static_cast<std::size_t>(j.dof) < q.size()
+                             ? j.multiplier * q[j.dof][0] + j.offset
+                             : 0.0;
     if (j.type == JointType::revolute)
       orientation = orientation * Quat(Eigen::AngleAxisd(value, j.axis));
     else if (j.type == JointType::prismatic)
@@ -65,10 +85,10 @@ void KinematicTree::computePointJacobian(const std::vector<RigidCoord3>& frames,
     RigidDeriv3& c = columns[j.dof];
     if (j.type == JointType::revolute) {
       // The joint frame's origin is on the axis: the child link's center for a revolute joint.
-      c.linear = axis.cross(point - frames[i].center);
-      c.angular = axis;
+      c.linear += j.multiplier * axis.cross(point - frames[i].center);
+      c.angular += j.multiplier * axis;
     } else {
-      c.linear = axis;
+      c.linear += j.multiplier * axis;
     }
   });
 }

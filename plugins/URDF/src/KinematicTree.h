@@ -27,14 +27,20 @@ struct KinematicJoint {
   Vec3d axis = Vec3d::UnitZ();
   JointType type = JointType::fixed;
   int dof = -1;              ///< index in q, -1 for a fixed joint
+  /// URDF's mimic joint: the link whose joint value this one follows, as multiplier * q +
+  /// offset (no value of its own in q); -1 for an independent joint.
+  int mimic = -1;
+  double multiplier = 1;
+  double offset = 0;
 };
 
 /// The joint (of a link, its parent and origin) and each link's world frame.
 class KinematicTree {
  public:
   /// One joint per link; joints[0] is the base link's (fixed, parent -1). Returns false with
-  /// `error` when a parent is not an earlier link or an axis is zero. Numbers the moving joints'
-  /// values in link order.
+  /// `error` when a parent is not an earlier link, an axis is zero or a mimic joint follows no
+  /// independent moving joint. Numbers the independent moving joints' values in link order; a
+  /// mimic joint takes the number of the joint it follows.
   bool setJoints(std::vector<KinematicJoint> joints, std::string& error);
   void setBase(const RigidCoord3& base) { m_base = base; }
 
@@ -48,7 +54,8 @@ class KinematicTree {
   /// Velocity (linear of the point `point`, and angular, world coordinates) of a point fixed
   /// to link `link`, per unit speed of each joint value: column j is the 6-vector
   /// [v; w] for qdot = e_j. `frames` are computeFrames' at the same q. Fills `columns`
-  /// (dofCount entries, zero for joints not on the link's chain).
+  /// (dofCount entries, zero for joints not on the link's chain; a mimic joint adds its
+  /// multiplier times its motion to its source's column).
   void computePointJacobian(const std::vector<RigidCoord3>& frames, int link, const Vec3d& point,
                             std::vector<RigidDeriv3>& columns) const;
 

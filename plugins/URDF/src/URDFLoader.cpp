@@ -122,6 +122,7 @@ struct TreeLink {
   std::string jointName;
   KinematicJoint joint;
   const urdf::Joint* urdfJoint = nullptr;
+  std::string mimicJoint;  // the joint whose value this one follows (URDF's <mimic>), if any
 };
 
 // The six joints of a floating joint: x, y, z translations, then rotations about z, y, x.
@@ -317,11 +318,44 @@ bool URDFLoader::generateScene(SceneElement& node) {
           t.urdfJoint = nullptr;
           break;
         }
+        case urdf::Joint::PLANAR: {
+          // Motion in the plane normal to the axis: two translations (values name_u, name_v
+          // along u and v, axis = u x v) on virtual links, then the child turns about the axis.
+          const Vec3d n = toVec(j->axis);
+          if (n.norm() == 0) {
+            t.joint.type = JointType::revolute;  // a zero axis: reported below
+            break;
+          }
+          const Vec3d normal = n.normalized();
+          const Vec3d u = normal.unitOrthogonal(), v = normal.cross(u);
+          int parent = index;
+          for (const auto& [suffix, direction] : {std::pair{"_u", u}, std::pair{"_v", v}}) {
+            TreeLink slide;
+            slide.jointName = j->name + suffix;
+            slide.joint.parent = parent;
+            slide.joint.origin = parent == index ? t.joint.origin : RigidCoord3{};
+            slide.joint.axis = direction;
+            slide.joint.type = JointType::prismatic;
+            parent = static_cast<int>(links.size());
+            links.push_back(std::move(slide));
+          }
+          t.joint.parent = parent;
+          t.joint.origin = RigidCoord3{};
+          t.joint.type = JointType::revolute;
+          t.jointName = j->name + "_theta";
+          t.urdfJoint = nullptr;  // its <limit> and <dynamics> are about the plane: not applied
+          break;
+        }
         default:
-          msgError(where + "joint '" + j->name + "' is planar or of unknown type: only revolute, "
-                   "continuous, prismatic, fixed and floating joints are supported",
+          msgError(where + "joint '" + j->name + "' is of unknown type: only revolute, "
+                   "continuous, prismatic, fixed, floating and planar joints are supported",
                    "filename");
           return false;
+      }
+      if (j->mimic && t.joint.type != JointType::fixed) {
+        t.mimicJoint = j->mimic->joint_name;
+        t.joint.multiplier = j->mimic->multiplier;
+        t.joint.offset = j->mimic->offset;
       }
       if (t.joint.type != JointType::fixed && toVec(j->axis).norm() == 0) {
         msgError(where + "joint '" + j->name + "' has a zero axis", "filename");
@@ -329,6 +363,20 @@ bool URDFLoader::generateScene(SceneElement& node) {
       }
       links.push_back(t);
       if (!addChildren(static_cast<int>(links.size()) - 1)) return false;
+  // Mimic joints follow the value of the joint they name (no value of their own).
+  for (TreeLink& t : links) {
+    if (t.mimicJoint.empty()) continue;
+    for (std::size_t k = 0; k < links.size(); ++k)
+      if (links[k].jointName == t.mimicJoint && links[k].mimicJoint.empty() &&
+          links[k].joint.type != JointType::fixed)
+        t.joint.mimic = static_cast<int>(k);
+    if (t.joint.mimic < 0) {
+      msgError(where + "joint '" + t.jointName + "' mimics '" + t.mimicJoint +
+                   "', which is not a moving joint of the robot (nor a mimic one itself)",
+               "filename");
+      return false;
+    }
+  }
     }
     return true;
   };
@@ -375,7 +423,7 @@ bool URDFLoader::generateScene(SceneElement& node) {
   std::vector<double> lower, upper;
   bool anyDrive = false;
   for (const TreeLink& t : links) {
-    if (t.joint.type == JointType::fixed || t.jointName.empty()) continue;
+    if (t.joint.type == JointType::fixed || t.jointName.empty() || t.joint.mimic >= 0) continue;
     const unsigned dof = static_cast<unsigned>(jointNames.size());
     jointNames.push_back(t.jointName);
     const urdf::Joint* j = t.urdfJoint;
@@ -433,7 +481,14 @@ bool URDFLoader::generateScene(SceneElement& node) {
   std::vector<std::string> types;
   std::vector<RigidCoord3> origins;
   std::vector<Vec3d> axes;
+  std::vector<int> mimic;
+  std::vector<double> multipliers, offsets;
+  bool anyMimic = false;
   for (const TreeLink& t : links) {
+    mimic.push_back(t.joint.mimic);
+    multipliers.push_back(t.joint.multiplier);
+    offsets.push_back(t.joint.offset);
+    anyMimic = anyMimic || t.joint.mimic >= 0;
     parents.push_back(t.joint.parent);
     types.push_back(t.joint.type == JointType::fixed       ? "fixed"
                     : t.joint.type == JointType::revolute  ? "revolute"
@@ -454,6 +509,13 @@ bool URDFLoader::generateScene(SceneElement& node) {
        {"origins", joined(origins, frameText)},
        {"axes", joined(axes, vec3)},
        {"base", frameText(d_basePose.value())}}));
+  if (anyMimic) {
+    SceneElement& mapping = linkNode.children.back();
+    mapping.attributes.push_back(
+        {"mimic", joined(mimic, [](int m) { return std::to_string(m); })});
+    mapping.attributes.push_back({"mimicMultipliers", joined(multipliers, number)});
+    mapping.attributes.push_back({"mimicOffsets", joined(offsets, number)});
+  }
 
   // Visual meshes, attached to their link's frame.
   const fs::path urdfDir = fs::absolute(file).parent_path();

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // ArticulatedMapping: the link frames of the 2-link arm equal the closed form at random joint
 // values; on a branching 3D robot (origins with rpy, a prismatic joint, a fixed one) J equals
-// central differences of apply, jacobian() equals applyJ, and <J x, y> = <x, J^T y>.
+// central differences of apply, jacobian() equals applyJ, and <J x, y> = <x, J^T y>; the same
+// with a mimic joint, whose frames are those of its source's value times its multiplier plus
+// its offset; a mimic of a missing joint is an error.
 #include <random>
 
 #include "plugins/URDF/URDFTestRobots.h"
@@ -70,16 +72,19 @@ RigidDeriv3 difference(const RigidCoord3& a, const RigidCoord3& b) {
   return d;
 }
 
-TEST(ArticulatedMapping, JacobianIsTheDerivativeAndJTransposeItsAdjoint) {
+// J against central differences of apply, jacobian() against applyJ, <J x, y> = <x, J^T y>, at
+// random joint values of `urdf` (`dofs` joint values, 5 links).
+void expectJacobianConsistent(const std::string& urdf, std::size_t dofs) {
   RobotFolder folder;
   Runtime runtime;
   Scene scene(runtime);
-  ASSERT_TRUE(loadArm(scene, folder, armScene(folder, kBranchingRobot, "", "", "0 0 0")))
+  ASSERT_TRUE(loadArm(scene, folder, armScene(folder, urdf, "", "", "0 0 0")))
       << problems(scene.log());
   auto* mapping = findInScene<JointsToFrames>(scene.root());
   ASSERT_NE(mapping, nullptr);
   auto& q = mapping->input()->writeCoord(VecId::position());
-  ASSERT_EQ(q.size(), 3u);  // ja, jb, jd
+  ASSERT_EQ(q.size(), dofs);
+  const int n = static_cast<int>(dofs);
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> uniform(-1, 1);
   for (int sample = 0; sample < 5; ++sample) {
@@ -108,9 +113,9 @@ TEST(ArticulatedMapping, JacobianIsTheDerivativeAndJTransposeItsAdjoint) {
     // jacobian() columns are applyJ of unit vectors.
     const Eigen::SparseMatrix<double> J = mapping->jacobian();
     ASSERT_EQ(J.rows(), 30);
-    ASSERT_EQ(J.cols(), 3);
-    Eigen::VectorXd flatDq(3), flatJdq(30);
-    for (int j = 0; j < 3; ++j) flatDq[j] = dq[j][0];
+    ASSERT_EQ(J.cols(), n);
+    Eigen::VectorXd flatDq(n), flatJdq(30);
+    for (int j = 0; j < n; ++j) flatDq[j] = dq[j][0];
     for (int k = 0; k < 5; ++k) {
       flatJdq.segment<3>(6 * k) = Jdq[k].linear;
       flatJdq.segment<3>(6 * k + 3) = Jdq[k].angular;
@@ -125,13 +130,63 @@ TEST(ArticulatedMapping, JacobianIsTheDerivativeAndJTransposeItsAdjoint) {
       flatY.segment<3>(6 * k) = y[k].linear;
       flatY.segment<3>(6 * k + 3) = y[k].angular;
     }
-    std::vector<Vec1d> JTy(3, Vec1d::Zero());
+    std::vector<Vec1d> JTy(dofs, Vec1d::Zero());
     mapping->applyJT(JTy, y);
     double right = 0;
-    for (int j = 0; j < 3; ++j) right += flatDq[j] * JTy[j][0];
+    for (int j = 0; j < n; ++j) right += flatDq[j] * JTy[j][0];
     const double left = flatJdq.dot(flatY);
     EXPECT_LT(std::abs(left - right), 1e-13 * (flatJdq.norm() * flatY.norm()));
   }
+}
+
+TEST(ArticulatedMapping, JacobianIsTheDerivativeAndJTransposeItsAdjoint) {
+  expectJacobianConsistent(kBranchingRobot, 3);  // ja, jb, jd
+}
+
+// The branching robot with jd following ja (URDF's <mimic>): two joint values, jd's column
+// added to ja's, times the multiplier.
+std::string mimicRobot() {
+  std::string urdf = kBranchingRobot;
+  const std::string axis = R"(<axis xyz="0.3 -0.4 0.866"/>)";
+  urdf.insert(urdf.find(axis) + axis.size(),
+              R"(<mimic joint="ja" multiplier="-0.7" offset="0.2"/>)");
+  return urdf;
+}
+
+TEST(ArticulatedMapping, MimicJointFollowsItsSourceInFramesAndJacobian) {
+  expectJacobianConsistent(mimicRobot(), 2);  // ja, jb; jd = -0.7 ja + 0.2
+  // Link d's frame at (ja, jb) is the branching robot's at (ja, jb, -0.7 ja + 0.2).
+  RobotFolder folder, plainFolder;
+  Runtime runtime;
+  Scene mimic(runtime), plain(runtime);
+  ASSERT_TRUE(loadArm(mimic, folder, armScene(folder, mimicRobot(), "", "", "0 0 0")));
+  ASSERT_TRUE(loadArm(plain, plainFolder, armScene(plainFolder, kBranchingRobot, "", "", "0 0 0")));
+  std::string why;
+  const auto* names = dynamic_cast<const Data<std::vector<std::string>>*>(
+      resolveObjectPath(mimic.root(), "@/root/loader", why)->findData("jointNames"));
+  EXPECT_EQ(names->value(), (std::vector<std::string>{"ja", "jb"}));
+  auto* m = findInScene<JointsToFrames>(mimic.root());
+  auto* p = findInScene<JointsToFrames>(plain.root());
+  for (double ja : {-1.3, 0.4, 2.0}) {
+    std::vector<RigidCoord3> a, b;
+    m->apply(a, {Vec1d(ja), Vec1d(0.1)});
+    p->apply(b, {Vec1d(ja), Vec1d(0.1), Vec1d(-0.7 * ja + 0.2)});
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      EXPECT_LT((a[k].center - b[k].center).norm(), 1e-15) << "link " << k;
+      EXPECT_LT(a[k].orientation.angularDistance(b[k].orientation), 1e-14) << "link " << k;
+    }
+  }
+}
+
+TEST(ArticulatedMapping, MimicOfAMissingJointIsAnError) {
+  std::string urdf = mimicRobot();
+  urdf.replace(urdf.find("<mimic joint=\"ja\""), 18, "<mimic joint=\"zz\"");
+  RobotFolder folder;
+  Runtime runtime;
+  Scene scene(runtime);
+  EXPECT_FALSE(loadArm(scene, folder, armScene(folder, urdf, "", "", "0 0 0")));
+  EXPECT_NE(problems(scene.log()).find("mimics 'zz'"), std::string::npos) << problems(scene.log());
 }
 
 }  // namespace

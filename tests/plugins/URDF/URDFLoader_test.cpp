@@ -81,6 +81,41 @@ TEST(URDFLoader, ImposedJointMotionFollowsItsKeysAndDrivesTheRest) {
   EXPECT_GT(std::abs(valuesAt(scene, "/root/arm/joints")[1]), 0.01);
 }
 
+TEST(URDFLoader, PlanarJointSlidesInItsPlaneAndTurnsAboutItsNormal) {
+  // A 1 kg puck on a planar joint of normal z, gravity (-3, 0, -9.81): it falls along -x only
+  // (z is out of its plane), x = -3 t^2 / 2, and nothing turns it.
+  const std::string urdf = R"(<?xml version="1.0"?>
+<robot name="puck">
+  <link name="table"/>
+  <link name="puck"><inertial><mass value="1"/>
+    <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+  <joint name="slide" type="planar"><parent link="table"/><child link="puck"/>
+    <origin xyz="0 0 0.1"/><axis xyz="0 0 1"/></joint>
+</robot>
+)";
+  RobotFolder folder;
+  Runtime runtime;
+  Scene scene(runtime);
+  ASSERT_TRUE(loadArm(scene, folder,
+                      armScene(folder, urdf, "<NewmarkImplicitSolver/><SparseLDLSolver/>", "",
+                               "-3 0 -9.81")))
+      << problems(scene.log());
+  EXPECT_EQ(problems(scene.log()), "");
+  std::string why;
+  const auto* names = dynamic_cast<const Data<std::vector<std::string>>*>(
+      resolveObjectPath(scene.root(), "@/root/loader", why)->findData("jointNames"));
+  EXPECT_EQ(names->value(), (std::vector<std::string>{"slide_u", "slide_v", "slide_theta"}));
+  for (int i = 0; i < 500; ++i) ASSERT_TRUE(scene.step()) << problems(scene.log());
+  // Frames: table, the two slides' virtual links, puck.
+  const std::vector<double> frames = valuesAt(scene, "/root/puck/links/frames");
+  ASSERT_EQ(frames.size(), 4u * 7u);
+  const double* puck = &frames[3 * 7];
+  EXPECT_NEAR(puck[0], -0.5 * 3 * 0.25, 1e-9);  // t = 0.5 s
+  EXPECT_NEAR(puck[1], 0.0, 1e-12);
+  EXPECT_NEAR(puck[2], 0.1, 1e-12);
+  EXPECT_NEAR(std::abs(puck[6]), 1.0, 1e-12);  // qw: not turned
+}
+
 TEST(URDFLoader, FloatingBaseFallsFreely) {
   RobotFolder folder;
   ArmOptions floating;
