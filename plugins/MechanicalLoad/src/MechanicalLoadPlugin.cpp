@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "ConstantForceField.h"
+#include "Gravity.h"
 #include "PlaneForceField.h"
 #include "TrianglePressureForceField.h"
 #include "core/Plugin.h"
@@ -13,6 +14,7 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .with<ConstantForceField<Vec2Types>>("Vec2d")
       .with<ConstantForceField<Vec1Types>>("Vec1d")
       .with<ConstantForceField<Rigid3Types>>("Rigid3d");
+  registry.add("Gravity", "Sets the gravity of its node and the nodes below").with<Gravity>();
   registry.add("PlaneForceField", "Penalty plane pushing points back to its free side")
       .with<PlaneForceField<Vec3Types>>("Vec3d")
       .with<PlaneForceField<Rigid3Types>>("Rigid3d");
