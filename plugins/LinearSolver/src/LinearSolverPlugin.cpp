@@ -19,11 +19,14 @@ void registerComponents(stroma::PluginRegistry& registry) {
   registry.add("PCGLinearSolver",
                "Matrix-free conjugate gradient preconditioned by another linear solver")
       .with<PCGLinearSolver>("GraphScattered");
+  // AsyncSparseLDLSolver is SOFA's SparseLDLSolver whose factorization runs in a thread, a step
+  // late: the same model and system. Stroma factorizes synchronously (README: more accurate).
   registry.add("SparseLDLSolver", "Direct sparse LDL^T solver (Eigen SimplicialLDLT)")
       .with<SparseLDLSolver>("CompressedRowSparseMatrixd")
       .with<SparseLDLSolver>("CompressedRowSparseMatrixMat3x3d")
       .with<SparseLDLSolver>("CompressedRowSparseMatrix")
       .with<SparseLDLSolver>("CompressedRowSparseMatrixMat3x3")
+      .alias("AsyncSparseLDLSolver")
       .alias("EigenSimplicialLDLT")
       .alias("EigenSimplicialLLT");
 }

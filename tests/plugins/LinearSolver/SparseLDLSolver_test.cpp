@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // SparseLDLSolver: the same solution as conjugate gradients (matrix-free and assembled) on a
 // 3D spring lattice, one symbolic analysis per sparsity pattern, a clear error for a matrix
-// that is singular or indefinite, and SOFA's names and templates.
+// that is singular or indefinite, and SOFA's names and templates (AsyncSparseLDLSolver solves
+// synchronously).
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -111,6 +112,27 @@ TEST(SparseLDLSolver, AcceptsSofaNamesAndTemplates) {
     EXPECT_NEAR(s.position(0).x(), 1 / (1 + 100 * 0.01 * 0.01), 1e-14);
     EXPECT_EQ(s.body().get<LinearSolver>()->className(), "SparseLDLSolver");
   }
+}
+
+// SOFA's AsyncSparseLDLSolver factorizes in a thread and solves with a factorization a step late;
+// Stroma's alias factorizes every solve synchronously: the same states as SparseLDLSolver on a
+// perturbed spring lattice (a matrix that changes as the springs turn), one factorization a step.
+TEST(SparseLDLSolver, AsyncSparseLDLSolverFactorizesSynchronously) {
+  auto run = [](const std::string& solver) {
+    SolverScene s(latticeScene(
+        4, R"(<EulerImplicitSolver rayleighMass="0.1" rayleighStiffness="0.1"/>)" + solver));
+    EXPECT_TRUE(s.loaded()) << s.log();
+    for (int n = 0; n < 8; ++n) EXPECT_TRUE(s.step()) << s.log();
+    EXPECT_EQ(s.field("ldl", "factorizations"), "8");
+    EXPECT_EQ(s.body().get<LinearSolver>()->className(), "SparseLDLSolver");
+    const auto& x = s.state().readCoord(VecId::position());
+    return std::vector<Vec3d>(x.begin(), x.end());
+  };
+  const std::vector<Vec3d> async =
+      run(R"(<AsyncSparseLDLSolver name="ldl" template="CompressedRowSparseMatrixMat3x3"/>)");
+  const std::vector<Vec3d> sync = run(R"(<SparseLDLSolver name="ldl"/>)");
+  ASSERT_EQ(async.size(), sync.size());
+  for (std::size_t i = 0; i < sync.size(); ++i) EXPECT_EQ(async[i], sync[i]) << "point " << i;
 }
 
 TEST(SparseLDLSolver, ReportsANonFiniteMatrixEntryAndWhereItIs) {
