@@ -40,8 +40,9 @@ void FreeMotionAnimationLoop::init() {
 
 void FreeMotionAnimationLoop::collectSolvers(Node& node) {
   if (!node.d_activated.value()) return;
-  for (OdeSolver* solver : node.getAll<OdeSolver>())
-    if (solver->isValid()) m_solvers.push_back({&node, solver});
+  for (const auto& object : node.objects())  // not getAll: no list allocated per step
+    if (auto* solver = dynamic_cast<OdeSolver*>(object.get()); solver && solver->isValid())
+      m_solvers.push_back({&node, solver});
   for (const auto& child : node.children()) collectSolvers(*child);
 }
 
@@ -67,16 +68,16 @@ BaseConstraintCorrection* findCorrection(Node& node, bool isSolverNode) {
 
 }  // namespace
 
+void FreeMotionAnimationLoop::updateBehaviorModels(Node& node, double dt) {
+  for (const auto& object : node.objects())
+    if (auto* model = dynamic_cast<BehaviorModel*>(object.get())) model->updatePosition(dt);
+  for (const auto& child : node.children()) updateBehaviorModels(*child, dt);
+}
+
 void FreeMotionAnimationLoop::step(Node& root, double dt, Timing& timing) {
   {
     ScopedPhase phase(timing, "behaviorModels");
-    std::vector<Node*> stack{&root};
-    while (!stack.empty()) {
-      Node* n = stack.back();
-      stack.pop_back();
-      for (BehaviorModel* model : n->getAll<BehaviorModel>()) model->updatePosition(dt);
-      for (const auto& c : n->children()) stack.push_back(c.get());
-    }
+    updateBehaviorModels(root, dt);
   }
   // Collision on the positions of the step's start, as SOFA (its free motion writes separate
   // free positions): a body moving more than the alarm distance per step is still caught
@@ -126,10 +127,14 @@ bool FreeMotionAnimationLoop::solveConstraints(Node& root, double dt, Timing& ti
 
   // Each solver's rows, carried to its independent states, and its compliance.
   m_problem.W.setZero(m, m);
-  std::vector<SolverSystem> systems;
-  std::vector<Eigen::Triplet<double>> triplets, systemTriplets;
+  // Kept from step to step with their storage (a warm step allocates less).
+  std::vector<Eigen::Triplet<double>>& triplets = m_triplets;
+  std::vector<Eigen::Triplet<double>>& systemTriplets = m_systemTriplets;
+  std::size_t used = 0;
   for (auto& [node, solver] : m_solvers) {
-    SolverSystem system;
+    if (used == m_systems.size()) m_systems.emplace_back();
+    SolverSystem& system = m_systems[used];
+    system.correction = nullptr;
     system.solver = solver;
     system.mop = &solver->operations(*node, timing, dt);
     MechanicalOperations& mop = *system.mop;
@@ -168,7 +173,7 @@ bool FreeMotionAnimationLoop::solveConstraints(Node& root, double dt, Timing& ti
     // columns of fixed dofs, which do not move. A solver whose rows are all on fixed dofs takes
     // no part in the solve.
     system.forceRows = system.H;
-    std::vector<char> fixed;
+    std::vector<char>& fixed = m_fixed;
     mop.fixedGlobalRows(fixed);
     system.H.prune([&](Eigen::Index, Eigen::Index col, double) {
       return !fixed[static_cast<std::size_t>(col)];
@@ -191,8 +196,9 @@ bool FreeMotionAnimationLoop::solveConstraints(Node& root, double dt, Timing& ti
       }
       system.correction->addCompliance(mop, system.response, system.H, m_problem.W);
     }
-    systems.push_back(std::move(system));
+    ++used;
   }
+  const std::span<SolverSystem> systems(m_systems.data(), used);
 
   m_problem.violation = Eigen::Map<const Eigen::VectorXd>(m_rows.violations().data(), m);
   m_problem.groups.assign(m_rows.groups().begin(), m_rows.groups().end());

@@ -48,6 +48,7 @@ class FreeMotionAnimationLoop final : public AnimationLoop {
  private:
   struct SolverSystem;  // one ODE solver's operations, rows and correction this step
   void collectSolvers(Node& node);
+  void updateBehaviorModels(Node& node, double dt);
   bool solveConstraints(Node& root, double dt, Timing& timing);
   void storeConstraintForces(std::span<SolverSystem> systems);
 
@@ -59,6 +60,9 @@ class FreeMotionAnimationLoop final : public AnimationLoop {
   ConstraintProblem m_problem;
   Eigen::VectorXd m_force;
   std::vector<BaseMechanicalState*> m_forcedBefore, m_forcedNow;
+  std::vector<SolverSystem> m_systems;  // the first ones used this step
+  std::vector<Eigen::Triplet<double>> m_triplets, m_systemTriplets;
+  std::vector<char> m_fixed;
 };
 
 }  // namespace stroma
