@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include "GridMeshCreator.h"
 #include "MeshGmshLoader.h"
 #include "MeshOBJLoader.h"
 #include "MeshSTLLoader.h"
@@ -19,6 +20,8 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .alias("MeshObjLoader");
   registry.add("MeshSTLLoader", "Reads an STL surface mesh (ASCII or binary)")
       .with<MeshSTLLoader>();
+  registry.add("GridMeshCreator", "A flat grid mesh of quads or triangles on the unit square")
+      .with<GridMeshCreator>();
   registry.add("SphereLoader", "Reads a sphere file (.sph): centers and radii of spheres")
       .with<SphereLoader>();
 }
