@@ -18,21 +18,29 @@ struct NodalForces {
 };
 
 /// The forces of every force field under `mop` at the current state (computeForce at `dt`),
-/// kept on the points of `state` where they are not zero.
-inline NodalForces readNodalForces(MechanicalOperations& mop,
-                                   const MechanicalState<Vec3Types>& state, double dt) {
+/// kept on the points of `state` where they are not zero, into `out` (its storage reused: a
+/// solver keeping one allocates nothing once warm).
+inline void readNodalForces(MechanicalOperations& mop, const MechanicalState<Vec3Types>& state,
+                            double dt, NodalForces& out) {
   const VecId f = mop.allocDeriv();
   MechanicalParams mp;
   mp.dt = dt;
   mop.computeForce(mp, f);
   const auto& forces = state.readDeriv(f);
-  NodalForces result;
+  out.points.clear();
+  out.forces.clear();
   for (std::size_t i = 0; i < forces.size(); ++i)
     if (!forces[i].isZero(0)) {
-      result.points.push_back(static_cast<int>(i));
-      result.forces.push_back(forces[i]);
+      out.points.push_back(static_cast<int>(i));
+      out.forces.push_back(forces[i]);
     }
   mop.freeVec(f);
+}
+
+inline NodalForces readNodalForces(MechanicalOperations& mop,
+                                   const MechanicalState<Vec3Types>& state, double dt) {
+  NodalForces result;
+  readNodalForces(mop, state, dt, result);
   return result;
 }
 

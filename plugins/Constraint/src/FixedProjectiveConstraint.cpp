@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "FixedProjectiveConstraint.h"
 
+#include <algorithm>
+
 #include "core/IndexChecks.h"
 
 namespace stroma {
@@ -18,8 +20,11 @@ template <class DataTypes>
 void FixedProjectiveConstraint<DataTypes>::checkIndices() {
   if (!this->mstate() || d_indices.version() == m_checkedIndices) return;
   m_checkedIndices = d_indices.version();
-  reportIndicesOutOfRange(*this, d_indices.value(), this->mstate()->size(), "indices",
-                          "points of " + this->mstate()->path());
+  // An engine may give new indices every step: the message is written only when one is bad.
+  const std::size_t n = this->mstate()->size();
+  const auto& indices = d_indices.value();
+  if (std::all_of(indices.begin(), indices.end(), [n](unsigned i) { return i < n; })) return;
+  reportIndicesOutOfRange(*this, indices, n, "indices", "points of " + this->mstate()->path());
 }
 
 template <class DataTypes>

@@ -167,8 +167,12 @@ void BoxROI<DataTypes>::select(const std::vector<std::array<Index, N>>& elements
   const auto& boxes = d_box.value();
   const auto& oriented = m_oriented;
   const bool strict = d_strict.value();
-  std::vector<unsigned> selected;
-  std::vector<std::array<Index, N>> kept;
+  // Written in place: the outputs keep their storage from one update to the next (an ROI on
+  // moving positions updates every step, and a warm step allocates nothing).
+  std::vector<unsigned>& selected = indices.edit();
+  std::vector<std::array<Index, N>>& kept = inside.edit();
+  selected.clear();
+  kept.clear();
   std::size_t bad = 0;
   std::string firstBad;
   for (std::size_t e = 0; e < elements.size(); ++e) {
@@ -203,8 +207,6 @@ void BoxROI<DataTypes>::select(const std::vector<std::array<Index, N>>& elements
     else
       msgWarning(text, field);
   }
-  indices.setValue(std::move(selected));
-  inside.setValue(std::move(kept));
 }
 
 template <class DataTypes>
@@ -214,8 +216,14 @@ void BoxROI<DataTypes>::doUpdate() {
   const auto& x = d_position.value();
   const auto& boxes = d_box.value();
   if (!computeOrientedBoxes(m_oriented)) return;
-  std::vector<unsigned> in, out;
-  VecCoord pointsIn, pointsOut;
+  std::vector<unsigned>& in = d_indices.edit();
+  std::vector<unsigned>& out = d_indicesOut.edit();
+  VecCoord& pointsIn = d_pointsInROI.edit();
+  VecCoord& pointsOut = d_pointsOutROI.edit();
+  in.clear();
+  out.clear();
+  pointsIn.clear();
+  pointsOut.clear();
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (insideAny(boxes, m_oriented, toPoint3(x[i]))) {
       in.push_back(static_cast<unsigned>(i));
@@ -226,10 +234,6 @@ void BoxROI<DataTypes>::doUpdate() {
     }
   }
   d_nbIndices.setValue(static_cast<int>(in.size()));
-  d_indices.setValue(std::move(in));
-  d_pointsInROI.setValue(std::move(pointsIn));
-  d_indicesOut.setValue(std::move(out));
-  d_pointsOutROI.setValue(std::move(pointsOut));
   select(d_edges.value(), d_edgeIndices, d_edgesInROI, "edges");
   select(d_triangles.value(), d_triangleIndices, d_trianglesInROI, "triangles");
   select(d_quads.value(), d_quadIndices, d_quadInROI, "quad");

@@ -256,7 +256,8 @@ void PrecomputedLinearModel::solve(MechanicalOperations& mop, double dt) {
     return;
   }
   // Loads: the forces of the node's force fields now, kept where they fall on basis nodes.
-  const NodalForces loads = readNodalForces(mop, *m_state, dt);
+  NodalForces& loads = m_loads;
+  readNodalForces(mop, *m_state, dt, loads);
   m_forceNodes.clear();
   m_forces.clear();
   for (std::size_t k = 0; k < loads.points.size(); ++k) {

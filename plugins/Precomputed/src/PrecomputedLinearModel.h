@@ -12,6 +12,7 @@
 #include "core/DataTraits.h"
 #include "core/Link.h"
 #include "core/StateTypes.h"
+#include "simulation/NodalForces.h"
 #include "simulation/MechanicalState.h"
 #include "simulation/Solvers.h"
 #include "topology/Topology.h"
@@ -144,6 +145,7 @@ class PrecomputedLinearModel final : public OdeSolver, public precomputed::Basis
   std::vector<char> m_fixedNode;  ///< per node: 1 when all its dofs are fixed
   // Scratch of the step (sized once).
   precomputed::VectorXd m_u;
+  NodalForces m_loads;  // the forces read this step (storage kept)
   std::vector<int> m_forceNodes, m_imposedNodes;
   std::vector<precomputed::Vec3> m_forces, m_imposed, m_reactions;
   bool m_warnedForce = false, m_warnedSolve = false;
