@@ -229,6 +229,40 @@ bool Topology::removeTetrahedra(std::span<const Index> indices, std::string& err
   return true;
 }
 
+bool Topology::removeTriangles(std::span<const Index> indices, std::string& error) {
+  if (!d_tetrahedra.value().empty()) {
+    error = "its triangles are the faces of its tetrahedra: remove tetrahedra instead";
+    return false;
+  }
+  auto own = [](auto& data) {
+    data.value();
+    std::string ignored;
+    data.setParent(nullptr, ignored);
+  };
+  std::vector<Triangle> triangles = d_triangles.value();
+  std::vector<Edge> edges = d_edges.value();
+  TopologyChange change;
+  if (!removeTrianglesFromLists(triangles, edges, indices, change, error)) return false;
+  if (change.triangles.empty()) return true;
+  own(d_triangles);
+  d_triangles.setValue(std::move(triangles));
+  if (!change.edges.empty()) {
+    own(d_edges);
+    d_edges.setValue(std::move(edges));
+  }
+  if (!change.freedPoints.empty() && !m_reportedFreedPoints) {
+    m_reportedFreedPoints = true;
+    msgWarning(std::to_string(change.freedPoints.size()) +
+                   " points belong to no triangle anymore (the first is point " +
+                   std::to_string(change.freedPoints.front()) +
+                   "): they are free, with no stiffness (and no mass from the elements); points "
+                   "freed later are not reported",
+               "triangles");
+  }
+  // Not logged: the components that follow the topology rebuild at their next use.
+  return true;
+}
+
 std::optional<std::span<const TopologyChange>> Topology::changesSince(std::uint64_t since) const {
   const std::uint64_t now = revision();
   if (since > now) return std::nullopt;

@@ -96,6 +96,15 @@ class Topology : public Base {
   /// index is not a tetrahedron's; `error` then says which (for the caller to report).
   bool removeTetrahedra(std::span<const Index> indices, std::string& error);
 
+  /// Removes the triangles `indices` (any order, duplicates count once), and the edges this
+  /// topology lists that no remaining triangle uses; points are kept, renumbering as
+  /// removeTetrahedra. For a topology of triangles (it must hold no tetrahedra). The change
+  /// gets a new revision() but is not logged: changesSince() answers std::nullopt across it,
+  /// so the components that follow the topology rebuild from the lists. A point left without
+  /// triangles is free (the first time, a warning says so). Returns false, changing nothing,
+  /// when an index is not a triangle's; `error` then says which.
+  bool removeTriangles(std::span<const Index> indices, std::string& error);
+
   /// The changes from revision `since` to revision(), oldest first, when every one of them is
   /// logged; std::nullopt when not (the elements were set another way, or the log, which keeps
   /// the last kChangeLogCapacity changes, was trimmed): the caller then rebuilds from the

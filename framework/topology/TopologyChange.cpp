@@ -151,4 +151,76 @@ bool removeTetrahedraFromLists(std::vector<Tetrahedron>& tetrahedra,
   return true;
 }
 
+bool removeTrianglesFromLists(std::vector<Triangle>& triangles, std::vector<Edge>& edges,
+                              std::span<const Index> indices, TopologyChange& change,
+                              std::string& error) {
+  // 1. Check the indices, then sort them in decreasing order without duplicates.
+  for (Index i : indices)
+    if (i >= triangles.size()) {
+      error = "triangle " + std::to_string(i) + " does not exist (there are " +
+              std::to_string(triangles.size()) + " triangles" +
+              (triangles.empty() ? std::string()
+                                 : ", indices 0 to " + std::to_string(triangles.size() - 1)) +
+              ")";
+      return false;
+    }
+  std::vector<Index> removed(indices.begin(), indices.end());
+  std::sort(removed.begin(), removed.end());
+  removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
+  change = TopologyChange{};
+  change.triangles.sizeBefore = change.triangles.sizeAfter = triangles.size();
+  change.edges.sizeBefore = change.edges.sizeAfter = edges.size();
+  if (removed.empty()) return true;
+  auto isRemoved = [&](std::size_t t) {
+    return std::binary_search(removed.begin(), removed.end(), static_cast<Index>(t));
+  };
+  auto edgeOfTriangle = [](const Triangle& t, int e) {
+    return sortedKey<2>({t[e], t[(e + 1) % 3]});
+  };
+
+  // 2. The points and edges of the removed triangles.
+  std::vector<Index> touched;
+  KeySet<2> triangleEdges;
+  for (Index r : removed) {
+    const Triangle& t = triangles[r];
+    touched.insert(touched.end(), t.begin(), t.end());
+    for (int e = 0; e < 3; ++e) triangleEdges.insert(edgeOfTriangle(t, e));
+  }
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+
+  // 3. What the remaining triangles around the touched points still use.
+  std::vector<char> stillUsed(touched.size(), 0);
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    if (isRemoved(t)) continue;
+    const Triangle& tri = triangles[t];
+    bool near = false;
+    for (Index v : tri) {
+      const auto it = std::lower_bound(touched.begin(), touched.end(), v);
+      if (it != touched.end() && *it == v) {
+        near = true;
+        stillUsed[static_cast<std::size_t>(it - touched.begin())] = 1;
+      }
+    }
+    if (near)
+      for (int e = 0; e < 3; ++e) triangleEdges.erase(edgeOfTriangle(tri, e));
+  }
+  for (std::size_t k = 0; k < touched.size(); ++k)
+    if (!stillUsed[k]) change.freedPoints.push_back(touched[k]);
+
+  // 4. The listed edges that no remaining triangle uses.
+  std::vector<Index> removedEdges;
+  if (!triangleEdges.empty())
+    for (std::size_t i = 0; i < edges.size(); ++i)
+      if (triangleEdges.contains(sortedKey<2>(edges[i])))
+        removedEdges.push_back(static_cast<Index>(i));
+  std::reverse(removed.begin(), removed.end());
+  std::reverse(removedEdges.begin(), removedEdges.end());
+
+  // 5. Remove, last element into each removed slot.
+  removeFromList(triangles, std::move(removed), change.triangles);
+  removeFromList(edges, std::move(removedEdges), change.edges);
+  return true;
+}
+
 }  // namespace stroma

@@ -76,4 +76,13 @@ bool removeTetrahedraFromLists(std::vector<Tetrahedron>& tetrahedra,
                                std::span<const Index> indices, TopologyChange& change,
                                std::string& error);
 
+/// Removes the triangles `indices` (any order; duplicates count once) from `triangles`, and from
+/// `edges` those of their edges that no remaining triangle uses, with the same renumbering as
+/// removeTetrahedraFromLists. Fills `change.triangles`, `change.edges` and `change.freedPoints`
+/// (the points of the removed triangles that no remaining triangle uses). Returns false,
+/// changing nothing, when an index is not that of a triangle; `error` then names the first.
+bool removeTrianglesFromLists(std::vector<Triangle>& triangles, std::vector<Edge>& edges,
+                              std::span<const Index> indices, TopologyChange& change,
+                              std::string& error);
+
 }  // namespace stroma

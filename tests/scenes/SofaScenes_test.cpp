@@ -112,6 +112,28 @@ const KnownGap kKnownGaps[] = {
      "ReadState and CompareState read the file WriteState.scn writes; SOFA fails alike without it"},
     {"TutorialForceFieldLiverTriangleFEM.scn", "mapping onto surfaces or lines is not supported",
      "input_topology", "Mapping: BarycentricMapping onto triangles (a surface) is not provided"},
+    {"Container/Dynamic/", "adding elements and incisions are not supported", "filename",
+     "Cutting: TopologicalChangeProcessor's ADD= and INCISE= are not provided"},
+    {"Container/Dynamic/", "Stroma removes only tetrahedra and triangles at run time", "",
+     "Cutting/Topology: removing quads, hexahedra or points at run time is not provided"},
+    {"Container/Dynamic/Adding", "needs a topology with triangles", "topology",
+     "the scene starts without elements and adds them with TopologicalChangeProcessor (ADD=, "
+     "not provided); Stroma's components need their elements at init"},
+    {"Container/Dynamic/Adding", "no topology with tetrahedra in its node", "topology",
+     "the scene starts without elements and adds them with TopologicalChangeProcessor (ADD=, "
+     "not provided); Stroma's components need their elements at init"},
+    {"Container/Dynamic/Adding", "needs triangles: a topology with triangles", "topology",
+     "the scene starts without elements and adds them with TopologicalChangeProcessor (ADD=, "
+     "not provided); Stroma's components need their elements at init"},
+    {"RemovingPointSprings.scn", "springs with indices out of range", "spring",
+     "StateContainer: SOFA's MechanicalObject takes the points of a PointSetTopologyContainer "
+     "in its node"},
+    {"RemovingTetra2TriangleProcess_performanceTest.scn", "does not exist: /root/TT/Container",
+     "filename",
+     "the file removes 10000 of the 9409 tetrahedra left at T= 0.4; Stroma refuses an index "
+     "past the elements (SOFA is believed to skip such indices with a warning)"},
+    {"LinearMovementConstraint_RemovingMeshTest.scn", "has 10 movements for 5 key times",
+     "movements", "the scene gives 10 movements for 5 key times; Stroma asks for one each"},
     {"RegularGridTopology_TrianglesMesh.scn", "needs a linear solver in its node", "linearSolver",
      "ODESolver: SOFA expands CGImplicit into an EulerImplicitSolver and a CGLinearSolver in the "
      "node, and the scene's other EulerImplicitSolver uses that CG; Stroma's CGImplicitSolver "

@@ -14,8 +14,8 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .with<TetrahedraRemover>();
   registry
       .add("TopologicalChangeProcessor",
-           "Applies the topological changes of a SOFA change file (REMOVE= of tetrahedra) at "
-           "their times")
+           "Applies the topological changes of a SOFA change file (REMOVE= of tetrahedra or "
+           "of a surface's triangles) at their times")
       .with<TopologicalChangeProcessor>();
 }
 

@@ -58,7 +58,7 @@ std::string removedKind(const Topology& topology) {
 }  // namespace
 
 std::string TopologicalChangeProcessor::where(const Removal& removal, bool indexLine) const {
-  if (removal.line == 0) return "tetrahedraToRemove";
+  if (removal.line == 0) return m_dataField;
   return d_filename.value().original + ":" + std::to_string(removal.line + (indexLine ? 1 : 0));
 }
 
@@ -97,7 +97,8 @@ bool TopologicalChangeProcessor::readFile() {
     }
     if (command == "ADD=" || command == "INCISE=")
       return fail(k, "'" + lines[k].substr(lines[k].find(command)) +
-                         "': Stroma applies only REMOVE= (of tetrahedra) yet; adding elements "
+                         "': Stroma applies only REMOVE= (of tetrahedra and triangles) yet; adding "
+                         "elements "
                          "and incisions are not supported");
     if (command != "REMOVE=")
       return fail(k, "unknown command '" + std::string(command) +
@@ -142,26 +143,35 @@ void TopologicalChangeProcessor::init() {
   m_next = 0;
   m_removedCount = 0;
   m_topology = nullptr;
+  m_onTriangles = false;
+  m_dataField = "tetrahedraToRemove";
   if (d_useDataInputs.value()) {
-    // Removals given as Data: one time, tetrahedra only.
-    for (const auto* other : {&d_pointsToRemove, &d_edgesToRemove, &d_trianglesToRemove,
-                              &d_quadsToRemove, &d_hexahedraToRemove})
+    // Removals given as Data: one time, tetrahedra or triangles.
+    for (const auto* other :
+         {&d_pointsToRemove, &d_edgesToRemove, &d_quadsToRemove, &d_hexahedraToRemove})
       if (!other->value().empty()) {
-        msgError("Stroma removes only tetrahedra at run time: removing " + other->name() +
-                     " (the elements of " +
-                     other->name().substr(0, other->name().find("ToRemove")) +
-                     ") is not supported yet",
+        msgError("Stroma removes only tetrahedra and triangles at run time: " + other->name() +
+                     " is not supported yet",
                  other->name());
         return;
       }
-    if (!d_tetrahedraToRemove.value().empty())
-      m_removals.push_back({d_timeToRemove.value(), d_tetrahedraToRemove.value(), 0});
+    if (!d_tetrahedraToRemove.value().empty() && !d_trianglesToRemove.value().empty()) {
+      msgError(
+          "give tetrahedraToRemove or trianglesToRemove, not both: a topology removes the "
+          "elements of its own kind",
+          "trianglesToRemove");
+      return;
+    }
+    m_dataField = d_trianglesToRemove.value().empty() ? "tetrahedraToRemove" : "trianglesToRemove";
+    const auto& indices = d_trianglesToRemove.value().empty() ? d_tetrahedraToRemove.value()
+                                                              : d_trianglesToRemove.value();
+    if (!indices.empty()) m_removals.push_back({d_timeToRemove.value(), indices, 0});
     return;
   }
   if (d_filename.value().original.empty()) {
     msgError(
         "no change file: set filename to a topological change file, or useDataInputs=\"true\" "
-        "with timeToRemove and tetrahedraToRemove",
+        "with timeToRemove and tetrahedraToRemove or trianglesToRemove",
         "filename");
     return;
   }
@@ -185,29 +195,43 @@ void TopologicalChangeProcessor::bwdInit() {
     return;
   }
   if (m_removals.empty()) return;
+  // The kind of elements removed: the container's own (tetrahedra, or triangles of a surface).
   const std::string kind = removedKind(*m_topology);
-  if (kind != "tetrahedra") {
+  m_onTriangles = kind == "triangles" && m_topology->tetrahedra().empty();
+  const std::string field = m_removals.front().line == 0 ? m_dataField : "filename";
+  if (kind != "tetrahedra" && !m_onTriangles) {
     msgError(where(m_removals.front(), false) + ": 'REMOVE=' removes the " + kind + " of " +
                  m_topology->path() + " (" + m_topology->className() +
-                 "): Stroma removes only tetrahedra at run time yet",
-             m_removals.front().line == 0 ? "tetrahedraToRemove" : "filename");
+                 "): Stroma removes only tetrahedra and triangles at run time yet",
+             field);
     return;
   }
-  // Each removal against the number of tetrahedra left by the ones before it.
-  std::size_t count = m_topology->tetrahedra().size();
+  if (m_removals.front().line == 0 &&
+      m_dataField != (m_onTriangles ? "trianglesToRemove" : "tetrahedraToRemove")) {
+    msgError(m_topology->path() + " (" + m_topology->className() + ") removes its " + kind +
+                 ": give " + (m_onTriangles ? "trianglesToRemove" : "tetrahedraToRemove"),
+             m_dataField);
+    return;
+  }
+  // Each removal against the number of elements left by the ones before it.
+  const char* element = m_onTriangles ? "triangle " : "tetrahedron ";
+  std::size_t count = elementCount();
   for (const Removal& removal : m_removals) {
-    const std::string field = removal.line == 0 ? "tetrahedraToRemove" : "filename";
     for (Index t : removal.indices)
       if (t >= count) {
-        msgError(where(removal, true) + ": tetrahedron " + std::to_string(t) + " (time " +
+        msgError(where(removal, true) + ": " + element + std::to_string(t) + " (time " +
                      std::to_string(removal.time) + ") does not exist: " + m_topology->path() +
-                     " has " + std::to_string(count) + " tetrahedra then",
+                     " has " + std::to_string(count) + " " + kind + " then",
                  field);
         return;
       }
     const std::unordered_set<Index> distinct(removal.indices.begin(), removal.indices.end());
     count -= distinct.size();
   }
+}
+
+std::size_t TopologicalChangeProcessor::elementCount() const {
+  return m_onTriangles ? m_topology->triangles().size() : m_topology->tetrahedra().size();
 }
 
 void TopologicalChangeProcessor::updatePosition(double dt) {
@@ -217,14 +241,16 @@ void TopologicalChangeProcessor::updatePosition(double dt) {
   for (; m_next < m_removals.size() && m_removals[m_next].time < t1 - late; ++m_next) {
     const Removal& removal = m_removals[m_next];
     std::string error;
-    const std::size_t before = m_topology->tetrahedra().size();
-    if (!m_topology->removeTetrahedra(removal.indices, error)) {
+    const std::size_t before = elementCount();
+    const bool removed = m_onTriangles ? m_topology->removeTriangles(removal.indices, error)
+                                       : m_topology->removeTetrahedra(removal.indices, error);
+    if (!removed) {
       msgError(where(removal, true) + ": at time " + std::to_string(removal.time) +
                    ", cannot remove from " + m_topology->path() + ": " + error,
-               removal.line == 0 ? "tetrahedraToRemove" : "filename");
+               removal.line == 0 ? m_dataField : "filename");
       return;
     }
-    m_removedCount += before - m_topology->tetrahedra().size();
+    m_removedCount += before - elementCount();
   }
 }
 

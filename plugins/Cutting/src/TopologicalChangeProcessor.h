@@ -23,14 +23,15 @@ namespace stroma {
 ///   7 8
 ///
 /// `REMOVE= n` removes n elements of the container's own kind (the tetrahedra of a
-/// TetrahedronSetTopologyContainer), indices in the numbering of that time (each removal
-/// renumbers, SOFA's way: TopologyChange.h). As SOFA reads it, n rules: indices past the end of
-/// the line read as 0 (SOFA's shipped files write "REMOVE= 10" over "1 2 ... 9"), and numbers
-/// past n are ignored; either case is reported by a warning. Times apply as in TetrahedraRemover:
-/// during the step [t0, t0 + dt) that contains them.
+/// TetrahedronSetTopologyContainer, the triangles of a TriangleSetTopologyContainer), indices in
+/// the numbering of that time (each removal renumbers, SOFA's way: TopologyChange.h). As SOFA reads
+/// it, n rules: indices past the end of the line read as 0 (SOFA's shipped files write "REMOVE= 10"
+/// over "1 2 ... 9"), and numbers past n are ignored; either case is reported by a warning. Times
+/// apply as in TetrahedraRemover: during the step [t0, t0 + dt) that contains them.
 ///
-/// Stroma removes tetrahedra only (points are kept: SOFA also deletes the points left without
-/// elements, Stroma keeps them free). A removal of another kind, `ADD=` and `INCISE=` are
+/// Stroma removes tetrahedra and triangles (Topology::removeTetrahedra, removeTriangles), and
+/// keeps the points: SOFA also deletes the points left without elements, Stroma keeps them free
+/// (no mass, no stiffness). A removal of another kind, `ADD=` and `INCISE=` are
 /// errors at load naming the command, the file and the line.
 class TopologicalChangeProcessor final : public BehaviorModel {
  public:
@@ -43,8 +44,8 @@ class TopologicalChangeProcessor final : public BehaviorModel {
                          "SOFA's event switch, accepted: the changes are applied at the start of "
                          "their step either way."};
   Data<bool> d_useDataInputs{this, "useDataInputs", false,
-                             "Take the removal from timeToRemove and tetrahedraToRemove instead "
-                             "of a file."};
+                             "Take the removal from timeToRemove and tetrahedraToRemove (or "
+                             "trianglesToRemove) instead of a file."};
   Data<double> d_timeToRemove{
       this, "timeToRemove", 0.0, "With useDataInputs: time of the removal.", {.unit = "s"}};
   Data<std::vector<Index>> d_tetrahedraToRemove{
@@ -121,7 +122,12 @@ class TopologicalChangeProcessor final : public BehaviorModel {
   /// Data inputs.
   std::string where(const Removal& removal, bool indexLine) const;
 
+  /// The number of elements of the kind removed.
+  std::size_t elementCount() const;
+
   Topology* m_topology = nullptr;
+  bool m_onTriangles = false;  ///< removes triangles (a surface), else tetrahedra
+  std::string m_dataField = "tetrahedraToRemove";  ///< the Data input used
   std::vector<Removal> m_removals;
   std::size_t m_next = 0;
   std::size_t m_removedCount = 0;

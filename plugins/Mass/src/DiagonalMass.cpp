@@ -27,17 +27,30 @@ void DiagonalMass::init() {
     msgInfo("total mass " + std::to_string(totalMass()) + " on " + std::to_string(n) + " points");
 }
 
-bool DiagonalMass::compute() {
-  const VecCoord& rest = mstate()->readCoord(VecId::restPosition());
-  const VecCoord& points = d_computeMassOnRest.value() && rest.size() == mstate()->size()
-                               ? rest
-                               : mstate()->readCoord(VecId::position());
+bool DiagonalMass::compute(bool again) {
+  // Again after a topology change: on the points of the first computation, as an update
+  // would (the remaining elements keep their masses), when the state kept its size.
+  if (!again || m_points.size() != mstate()->size()) {
+    const VecCoord& rest = mstate()->readCoord(VecId::restPosition());
+    const VecCoord& points = d_computeMassOnRest.value() && rest.size() == mstate()->size()
+                                 ? rest
+                                 : mstate()->readCoord(VecId::position());
+    m_points.assign(points.begin(), points.end());
+  }
+  // Every element removed at run time: no mass left (SOFA deletes the points then).
+  const Topology& t = *m_topology;
+  if (again && t.edges().empty() && t.triangles().empty() && t.quads().empty() &&
+      t.tetrahedra().empty() && t.hexahedra().empty()) {
+    m_lumped = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m_points.size()));
+    m_measure = 0;
+    m_topologyRevision = t.revision();
+    return true;
+  }
   MeshMassMatrix mesh;
-  if (!computeMeshMass(*this, *m_topology, points, mesh)) return false;
+  if (!computeMeshMass(*this, *m_topology, m_points, mesh)) return false;
   m_lumped = mesh.lumped;
   m_measure = mesh.measure;
   m_onTetrahedra = mesh.elements == "tetrahedra";
-  if (m_onTetrahedra) m_points.assign(points.begin(), points.end());
   m_topologyRevision = m_topology->revision();
   return true;
 }
@@ -48,7 +61,7 @@ void DiagonalMass::refresh() {
   if (now == m_topologyRevision) return;
   const auto changes = m_onTetrahedra ? m_topology->changesSince(m_topologyRevision) : std::nullopt;
   if (!changes) {
-    compute();
+    compute(true);
     return;
   }
   for (const TopologyChange& change : *changes)

@@ -15,7 +15,8 @@ namespace stroma {
 /// is `massDensity`, or `totalMass` over the total volume when totalMass > 0; `vertexMass`
 /// (one per point) gives the masses directly. M is diagonal. Gravity: m_i g at each point.
 ///
-/// The element integrals are computed at init (and again when the topology changes); the
+/// The element integrals are computed at init (and again, on the points of init, when the
+/// topology changes in a way it does not log, such as Topology::removeTriangles); the
 /// density is read at every use, so changing massDensity or totalMass takes effect at the
 /// next step. When tetrahedra are removed at run time (cutting, Topology::removeTetrahedra),
 /// the removed tetrahedra's V/4 are subtracted from their points, on the points the masses were
@@ -78,7 +79,7 @@ class DiagonalMass final : public Mass<Vec3Types> {
  private:
   /// Recomputes the element integrals when the topology changed.
   void refresh();
-  bool compute();
+  bool compute(bool again = false);
   /// f(i, mass of point i) for the points i < n.
   template <class F>
   void forEachMass(std::size_t n, F&& f) const;

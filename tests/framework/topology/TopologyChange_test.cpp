@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Removing tetrahedra from a topology (TopologyChange.h): SOFA's renumbering, the triangles and
-// edges that go with them, the change log and its revisions, and bad input.
+// edges that go with them, the change log and its revisions, and bad input; removing the
+// triangles of a surface.
 #include "topology/TopologyChange.h"
 
 #include <gtest/gtest.h>
@@ -202,6 +203,58 @@ TEST(TopologyChange, RemovingEverythingFreesThePointsWithOneWarning) {
   EXPECT_EQ(countMessages(t, MessageLevel::warning), 1u);
   EXPECT_FALSE(t.removeTetrahedra(std::vector<Index>{0}, error));
   EXPECT_NE(error.find("there are 0 tetrahedra"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace stroma::test
+
+namespace stroma::test {
+namespace {
+
+/// Removing the triangles of a surface: SOFA's renumbering, the edges no remaining triangle
+/// uses, the freed points, a change that is not logged, and a bad index.
+TEST(TopologyChange, RemovingTrianglesOfASurface) {
+  // A strip of 3 squares, two triangles each, points 0-3 below and 4-7 above.
+  PlainTopology t;
+  const std::vector<Triangle> strip{{0, 1, 5}, {0, 5, 4}, {1, 2, 6},
+                                    {1, 6, 5}, {2, 3, 7}, {2, 7, 6}};
+  t.d_triangles.setValue(strip);
+  t.d_edges.setValue(computeAllEdges({}, t.triangles(), {}, {}, {}));
+  ASSERT_EQ(t.edges().size(), 13u);
+  const std::uint64_t r0 = t.revision();
+  std::string error;
+  // The last square and one triangle of the first.
+  const std::vector<Index> remove{4, 5, 0, 5};
+  ASSERT_TRUE(t.removeTriangles(remove, error)) << error;
+  // Remove 5 (the last), then 4 (now the last), then 0 (old 3 moves into it).
+  EXPECT_EQ(t.triangles(), (std::vector<Triangle>{strip[3], strip[1], strip[2]}));
+  // Gone: 2-3, 3-7, 2-7 (the last square's diagonal), 6-7 and 0-1 (side of triangle 0 only).
+  const auto edges = sortedSet<2>(t.edges());
+  EXPECT_EQ(edges.size(), 8u);
+  for (const Edge e : std::vector<Edge>{{2, 3}, {3, 7}, {2, 7}, {6, 7}, {0, 1}})
+    EXPECT_FALSE(edges.contains(e)) << e[0] << "-" << e[1];
+  for (const Edge e : std::vector<Edge>{{1, 5}, {0, 5}, {2, 6}, {1, 2}, {5, 6}})
+    EXPECT_TRUE(edges.contains(e)) << e[0] << "-" << e[1];
+  EXPECT_EQ(countMessages(t, MessageLevel::warning), 1u);  // points 3 and 7 are free
+  EXPECT_NE(t.messageLog().messages().back().text.find("2 points belong to no triangle"),
+            std::string::npos);
+  // A new revision, not logged: the components rebuild.
+  EXPECT_EQ(t.revision(), r0 + 1);
+  EXPECT_FALSE(t.changesSince(r0).has_value());
+
+  // A bad index changes nothing.
+  const std::vector<Index> bad{0, 3};
+  EXPECT_FALSE(t.removeTriangles(bad, error));
+  EXPECT_NE(error.find("triangle 3 does not exist (there are 3 triangles"), std::string::npos)
+      << error;
+  EXPECT_EQ(t.triangles().size(), 3u);
+  EXPECT_EQ(t.revision(), r0 + 1);
+
+  // The triangles of a volume are its tetrahedra's faces: not removed alone.
+  PlainTopology cube;
+  fillCube(cube);
+  EXPECT_FALSE(cube.removeTriangles(std::vector<Index>{0}, error));
+  EXPECT_NE(error.find("remove tetrahedra instead"), std::string::npos) << error;
 }
 
 }  // namespace

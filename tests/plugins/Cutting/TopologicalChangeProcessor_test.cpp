@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // TopologicalChangeProcessor: a SOFA change file removes tetrahedra at its times, leaving
 // exactly the expected elements (SOFA's renumbering); the mass drops by the removed elements'
-// mass and the cut body's forces stay consistent; the Data inputs; SOFA's short index lines;
-// malformed files and unsupported commands are errors naming the file and the line.
+// mass and the cut body's forces equal a rebuild's; triangles of a surface likewise; the Data
+// inputs; SOFA's short index lines; malformed files and unsupported commands are errors naming
+// the file and the line.
 #include "../../../plugins/Cutting/src/TopologicalChangeProcessor.h"
 
 #include <gtest/gtest.h>
@@ -228,25 +229,109 @@ TEST(TopologicalChangeProcessor, MalformedFilesAreErrorsNamingFileAndLine) {
     // A kind Stroma cannot remove yet.
     SceneHolder s;
     const Message m =
-        s.loadFailing(beam(R"(useDataInputs="true" timeToRemove="0.1" trianglesToRemove="0")"),
-                      {"removing trianglesToRemove", "not supported"});
-    EXPECT_EQ(m.field, "trianglesToRemove");
+        s.loadFailing(beam(R"(useDataInputs="true" timeToRemove="0.1" hexahedraToRemove="0")"),
+                      {"hexahedraToRemove is not supported"});
+    EXPECT_EQ(m.field, "hexahedraToRemove");
   }
 }
 
-TEST(TopologicalChangeProcessor, RemovingTrianglesOfATriangleContainerIsAnErrorNamingTheLine) {
+/// A 0.4 x 0.1 sheet of 4 x 1 squares, two triangles each (8), in a TriangleSetTopologyContainer
+/// with its edges, pinned at x = 0, with a membrane and a lumped mass of 2 kg/m^2.
+std::string sheet(const std::string& processor) {
+  return R"(
+<Node name="root" dt="0.01" gravity="0 0 -9.81">
+  <Node name="Sheet">
+    <EulerImplicitSolver/>
+    <CGLinearSolver iterations="200" tolerance="1e-10" threshold="1e-30"/>
+    <MechanicalObject name="dofs" template="Vec3"
+        position="0 0 0  0.1 0 0  0.2 0 0  0.3 0 0  0.4 0 0
+                  0 0.1 0  0.1 0.1 0  0.2 0.1 0  0.3 0.1 0  0.4 0.1 0"/>
+    <TriangleSetTopologyContainer name="topology"
+        triangles="0 1 6  0 6 5  1 2 7  1 7 6  2 3 8  2 8 7  3 4 9  3 9 8"
+        edges="0 1  1 2  2 3  3 4  5 6  6 7  7 8  8 9  0 5  1 6  2 7  3 8  4 9  0 6  1 7  2 8  3 9"/>
+    <TriangleSetTopologyModifier/>
+    <DiagonalMass name="mass" massDensity="2"/>
+    <TriangularFEMForceField name="FEM" youngModulus="1e4" poissonRatio="0.3" method="large"/>
+    <FixedConstraint indices="0 5"/>
+    <TopologicalChangeProcessor name="changes" )" +
+         processor + R"(/>
+  </Node>
+</Node>)";
+}
+
+TEST(TopologicalChangeProcessor, RemovesTrianglesOfASurfaceAndTheirUnusedEdges) {
   TempDir dir;
-  const auto file = dir.write("triangles.txt", "T= 0.1\n  REMOVE= 1\n0\n");
+  // The last square (triangles 6 and 7) at 0.02: the points 4 and 9 are left without triangles.
+  const auto file = dir.write("triangles.txt", "T= 0.02\n  REMOVE= 2\n6 7\n");
   SceneHolder s;
-  s.loadFailing(R"(
+  ASSERT_TRUE(s.load(sheet(fileAttribute(file))));
+  const Topology* topology = s.get<Topology>("@Sheet/topology");
+  const std::vector<Triangle> initial = topology->triangles();
+  auto mass = [&] {
+    ForceFieldChecker checker(s.scene(), *s.root().findChild("Sheet"));
+    return checker.matrixFreeMass().sum() / 3;
+  };
+  EXPECT_NEAR(mass(), 2 * 0.4 * 0.1, 1e-14);
+  ASSERT_TRUE(s.step(2));
+  EXPECT_EQ(topology->triangles().size(), 8u);
+  ASSERT_TRUE(s.scene().step());  // [0.02, 0.03): one warning, for the freed points
+  ASSERT_EQ(topology->triangles().size(), 6u);
+  EXPECT_EQ(topology->triangles(), std::vector<Triangle>(initial.begin(), initial.begin() + 6));
+  // The edges 3-4, 8-9, 4-9 and the diagonal 3-9 went; 3-8 is still the side of triangle 5.
+  EXPECT_EQ(topology->edges().size(), 13u);
+  for (const Edge& e : topology->edges())
+    for (Index v : e) EXPECT_TRUE(v != 4 && v != 9) << e[0] << " " << e[1];
+  std::size_t warnings = 0;
+  for (const Message& m : s.scene().log().messages())
+    if (m.level == MessageLevel::warning) {
+      ++warnings;
+      EXPECT_NE(m.text.find("2 points belong to no triangle anymore"), std::string::npos) << m.text;
+    }
+  EXPECT_EQ(warnings, 1u);
+  // The mass drops by the last square's; the membrane goes on without it.
+  EXPECT_NEAR(mass(), 2 * 0.3 * 0.1, 1e-14);
+  for (int i = 0; i < 20; ++i) ASSERT_TRUE(s.scene().step()) << describe(s.scene().log());
+  for (double x : numbers(s.text("@Sheet/dofs.position"))) EXPECT_TRUE(std::isfinite(x));
+}
+
+TEST(TopologicalChangeProcessor, TriangleDataInputsAndKindMismatch) {
+  {
+    SceneHolder s;
+    ASSERT_TRUE(
+        s.load(sheet(R"(useDataInputs="true" timeToRemove="0" trianglesToRemove="0 1")"), true));
+    ASSERT_TRUE(s.scene().step());
+    EXPECT_EQ(s.get<Topology>("@Sheet/topology")->triangles().size(), 6u);
+  }
+  {
+    SceneHolder s;
+    const Message m =
+        s.loadFailing(sheet(R"(useDataInputs="true" timeToRemove="0" tetrahedraToRemove="0")"),
+                      {"/root/Sheet/topology", "removes its triangles", "give trianglesToRemove"});
+    EXPECT_EQ(m.field, "tetrahedraToRemove");
+  }
+  {
+    TempDir dir;
+    const auto file = dir.write("triangles.txt", "T= 0.1\n  REMOVE= 1\n8\n");
+    SceneHolder s;
+    s.loadFailing(sheet(fileAttribute(file)),
+                  {"triangles.txt:3:", "triangle 8", "has 8 triangles then"});
+  }
+}
+
+TEST(TopologicalChangeProcessor, RemovingQuadsIsAnErrorNamingTheLine) {
+  TempDir dir;
+  const auto file = dir.write("quads.txt", "T= 0.1\n  REMOVE= 1\n0\n");
+  SceneHolder s;
+  s.loadFailing(
+      R"(
 <Node name="root" dt="0.01">
-  <MechanicalObject name="dofs" position="0 0 0  1 0 0  0 1 0"/>
-  <TriangleSetTopologyContainer name="topology" triangles="0 1 2"/>
+  <MechanicalObject name="dofs" position="0 0 0  1 0 0  1 1 0  0 1 0"/>
+  <QuadSetTopologyContainer name="topology" quads="0 1 2 3"/>
   <TopologicalChangeProcessor )" +
-                    fileAttribute(file) +
-                    R"(/>
+          fileAttribute(file) +
+          R"(/>
 </Node>)",
-                {"triangles.txt:2:", "removes the triangles of /root/topology", "only tetrahedra"});
+      {"quads.txt:2:", "removes the quads of /root/topology", "only tetrahedra and triangles"});
 }
 
 }  // namespace
