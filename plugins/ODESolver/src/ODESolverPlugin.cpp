@@ -5,6 +5,7 @@
 #include "EulerImplicitSolver.h"
 #include "NewmarkImplicitSolver.h"
 #include "NewtonRaphsonSolver.h"
+#include "RungeKutta2Solver.h"
 #include "RungeKutta4Solver.h"
 #include "StaticSolver.h"
 #include "core/Plugin.h"
@@ -30,6 +31,8 @@ void registerComponents(stroma::PluginRegistry& registry) {
       .add("CentralDifferenceSolver",
            "Explicit central differences (leapfrog) with Rayleigh mass damping")
       .with<CentralDifferenceSolver>();
+  registry.add("RungeKutta2Solver", "Explicit midpoint rule (second-order Runge-Kutta)")
+      .with<RungeKutta2Solver>();
   registry.add("RungeKutta4Solver", "Classic explicit fourth-order Runge-Kutta")
       .with<RungeKutta4Solver>();
   registry.add("NewmarkImplicitSolver", "Newmark beta implicit integration (average acceleration)")
