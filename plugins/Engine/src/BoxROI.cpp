@@ -3,6 +3,7 @@
 
 #include <Eigen/LU>
 
+#include "RoiInputs.h"
 #include "core/Node.h"
 #include "simulation/MechanicalState.h"
 #include "topology/Topology.h"
@@ -25,14 +26,6 @@ BoxROI<DataTypes>::BoxROI() {
 
 namespace {
 
-bool isGiven(const BaseData& data) { return data.isSet() || data.parent(); }
-
-// Makes `data` follow `parent` (same name, from a state, loader or topology); false on failure.
-bool follow(BaseData& data, BaseData* parent) {
-  std::string error;
-  return parent && data.setParent(parent, error);
-}
-
 // Where a point is in 3D: points of 1 or 2 coordinates have the others 0.
 template <int N>
 Vec3d toPoint3(const Vec<N>& p) {
@@ -43,38 +36,18 @@ Vec3d toPoint3(const Vec<N>& p) {
 
 }  // namespace
 
-// SOFA's search for the inputs not given: the node's state, else a loader of the node, else the
-// nearest state above; the element lists of the node's topology.
+// SOFA's search for the inputs not given (RoiInputs.h).
 template <class DataTypes>
 void BoxROI<DataTypes>::findDefaultInputs() {
   Node* here = node();
   if (!here) return;
-  if (!isGiven(d_position)) {
-    BaseData* source = nullptr;
-    if (auto* state = here->get<BaseMechanicalState>()) source = state->findData("rest_position");
-    for (const auto& object : here->objects()) {
-      if (source) break;
-      if (object->className().find("Loader") != std::string::npos)
-        source = object->findData("position");
-    }
-    if (!source)
-      if (auto* state = here->getUp<BaseMechanicalState>())
-        source = state->findData("rest_position");
-    if (!follow(d_position, source))
-      msgError(
-          "no position given, and no mechanical state or loader to take them from: give "
-          "position=\"@dofs.rest_position\" or add a MechanicalObject",
-          "position");
-  }
+  roi::findDefaultPosition(*this, d_position);
   if (const Topology* topology = here->get<Topology>()) {
-    auto take = [&](BaseData& data, const Data<bool>& wanted, const BaseData& source) {
-      if (!isGiven(data) && wanted.value()) follow(data, const_cast<BaseData*>(&source));
-    };
-    take(d_edges, d_computeEdges, topology->d_edges);
-    take(d_triangles, d_computeTriangles, topology->d_triangles);
-    take(d_quads, d_computeQuad, topology->d_quads);
-    take(d_tetrahedra, d_computeTetrahedra, topology->d_tetrahedra);
-    take(d_hexahedra, d_computeHexahedra, topology->d_hexahedra);
+    roi::followTopology(d_edges, d_computeEdges.value(), topology->d_edges);
+    roi::followTopology(d_triangles, d_computeTriangles.value(), topology->d_triangles);
+    roi::followTopology(d_quads, d_computeQuad.value(), topology->d_quads);
+    roi::followTopology(d_tetrahedra, d_computeTetrahedra.value(), topology->d_tetrahedra);
+    roi::followTopology(d_hexahedra, d_computeHexahedra.value(), topology->d_hexahedra);
   }
 }
 

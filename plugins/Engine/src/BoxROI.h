@@ -49,8 +49,8 @@ class BoxROI final : public Base, public DataEngine {
       "orientedBox",
       {},
       "Oriented boxes 'p0 p1 p2 depth' (nbBoxes x 10): the parallelogram of corners p0, p1, p2 "
-      "and p0 + p2 - p1, extruded by depth/2 on each side.",
-      {.unit = "m"}};
+      "and p0 + p2 - p1, extruded by depth/2 on each side (alias plane: SOFA's PlaneROI).",
+      {.unit = "m", .alias = "plane"}};
   Data<VecCoord> d_position{this,
                             "position",
                             {},

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "BoxROI.h"
 #include "GenerateRigidMass.h"
+#include "SphereROI.h"
 #include "core/Plugin.h"
 
 namespace {
@@ -10,7 +11,13 @@ void registerComponents(stroma::PluginRegistry& registry) {
   registry.add("BoxROI", "Selects the points and elements inside boxes (a data engine)")
       .with<BoxROI<Vec3Types>>("Vec3d")
       .with<BoxROI<Vec2Types>>("Vec2d")
-      .with<BoxROI<Vec1Types>>("Vec1d");
+      .with<BoxROI<Vec1Types>>("Vec1d")
+      // SOFA's PlaneROI selects what lies in the parallelogram p0, p1, p2, p0 + p2 - p1 extruded
+      // by depth/2 on each side, all points of an element inside: BoxROI's orientedBox, which
+      // also reads PlaneROI's attribute name `plane`.
+      .alias("PlaneROI");
+  registry.add("SphereROI", "Selects the points and elements inside spheres (a data engine)")
+      .with<SphereROI>("Vec3d");
   registry
       .add(
           "GenerateRigidMass",
