@@ -37,12 +37,7 @@ class TrianglePressureForceField final : public ForceField<Vec3Types> {
                          "Force per unit area on the triangles, world coordinates.",
                          {.unit = "Pa"}};
   Data<std::vector<unsigned>> d_triangleList{
-      this,
-      "triangleList",
-      {},
-      "Indices of the loaded triangles in the topology's triangles (alias triangleIndices, "
-      "as SOFA's scenes also write it).",
-      {.alias = "triangleIndices"}};
+      this, "triangleList", {}, "Indices of the loaded triangles in the topology's triangles."};
   Data<bool> d_useConstantForce{this, "useConstantForce", true,
                                 "The area is the rest area (constant force); false: the current "
                                 "area."};
