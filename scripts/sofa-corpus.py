@@ -29,6 +29,7 @@ import datetime
 import os
 import platform
 import re
+import shlex
 import shutil
 import signal
 import subprocess
@@ -193,7 +194,7 @@ def run_scene(args, scene):
 def git(*args):
     try:
         return subprocess.run(["git", "-C", CLONE] + list(args), capture_output=True, text=True,
-                              check=True).stdout.strip()
+                              check=True).stdout.rstrip()
     except (OSError, subprocess.CalledProcessError):
         return ""
 
@@ -409,10 +410,13 @@ def main():
     commit = args.built_from
     if not commit:
         commit = git("rev-parse", "--short=12", "HEAD") or "unknown"
-        if git("status", "--porcelain", "--untracked-files=no"):
-            commit += " (with uncommitted changes)"
-    command = " ".join(["scripts/sofa-corpus.py"] + [
-        a if not a.startswith(CLONE + os.sep) else os.path.relpath(a, CLONE) for a in sys.argv[1:]])
+        changed = sorted({"/".join(line[3:].split(" -> ")[-1].split("/")[:2])
+                          for line in git("status", "--porcelain").splitlines()
+                          if line[3:].startswith(("framework/", "plugins/", "applications/"))})
+        if changed:
+            commit += " with uncommitted changes in %s" % ", ".join(changed)
+    command = " ".join(["scripts/sofa-corpus.py"] + [shlex.quote(
+        a if not a.startswith(CLONE + os.sep) else os.path.relpath(a, CLONE)) for a in sys.argv[1:]])
     header = [
         ("Command", "`%s` (%d jobs, %.0f s in all)" % (command, args.jobs, elapsed)),
         ("Date", started.strftime("%Y-%m-%d %H:%M UTC")),
