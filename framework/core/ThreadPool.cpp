@@ -20,7 +20,7 @@ ThreadPool::ThreadPool(int threads)
 ThreadPool::~ThreadPool() = default;
 
 void ThreadPool::parallelFor(std::size_t n, std::size_t grain,
-                             const std::function<void(std::size_t, std::size_t)>& body) const {
+                             FunctionRef<void(std::size_t, std::size_t)> body) const {
   if (n == 0) return;
   if (m_threads <= 1 || n <= grain) {
     body(0, n);

@@ -2,8 +2,9 @@
 #pragma once
 
 #include <cstddef>
-#include <functional>
 #include <memory>
+
+#include "core/FunctionRef.h"
 
 namespace stroma {
 
@@ -21,9 +22,10 @@ class ThreadPool {
   int threadCount() const { return m_threads; }
 
   /// Calls body(begin, end) on disjoint ranges covering [0, n), in parallel when n is large
-  /// enough to pay for it (more than `grain` items per task).
+  /// enough to pay for it (more than `grain` items per task). The body is referenced, not
+  /// copied: a loop allocates nothing, whatever its lambda captures.
   void parallelFor(std::size_t n, std::size_t grain,
-                   const std::function<void(std::size_t, std::size_t)>& body) const;
+                   FunctionRef<void(std::size_t, std::size_t)> body) const;
 
  private:
   struct Arena;

@@ -364,8 +364,7 @@ bool TetrahedralFiberReinforcementForceField::refresh() {
 template <class Element>
 void TetrahedralFiberReinforcementForceField::computeElements(const Element& element) {
   // Each element writes its own slot; the sums per point come after, in a fixed order, so
-  // that results do not depend on the thread count. One captured reference: the std::function
-  // of parallelFor holds the lambda in place (no allocation in the step).
+  // that results do not depend on the thread count.
   m_elementForces.resize(m_tetrahedra.size());
   auto range = [&element](std::size_t begin, std::size_t end) {
     for (std::size_t t = begin; t < end; ++t) element(t);

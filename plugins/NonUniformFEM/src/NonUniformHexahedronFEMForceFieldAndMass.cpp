@@ -293,7 +293,7 @@ void NonUniformHexahedronFEMForceFieldAndMass::buildVertexAdjacency(std::size_t 
 
 void NonUniformHexahedronFEMForceFieldAndMass::accumulate(
     std::span<Vec3d> out, double factor, std::size_t grain,
-    const std::function<void(std::size_t, Eigen::Map<fem::HexahedronVectors>)>& perElement) {
+    FunctionRef<void(std::size_t, Eigen::Map<fem::HexahedronVectors>)> perElement) {
   const ThreadPool& pool = node()->threadPool();
   pool.parallelFor(m_hexahedra.size(), grain, [&](std::size_t begin, std::size_t end) {
     for (std::size_t e = begin; e < end; ++e)

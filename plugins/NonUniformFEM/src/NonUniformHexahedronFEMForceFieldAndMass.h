@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/FunctionRef.h"
 #include "HexahedronCondensation.h"
 #include "SolidMechanics/kernels/CorotationalHexahedron.h"
 #include "SolidMechanics/src/FemMethod.h"
@@ -160,7 +161,7 @@ class NonUniformHexahedronFEMForceFieldAndMass final : public Mass<Vec3Types> {
   /// vertex sums its corners in element order, so results do not depend on the thread count.
   void accumulate(
       std::span<Vec3d> out, double factor, std::size_t grain,
-      const std::function<void(std::size_t, Eigen::Map<fem::HexahedronVectors>)>& perElement);
+      FunctionRef<void(std::size_t, Eigen::Map<fem::HexahedronVectors>)> perElement);
 
   const Topology* m_topology = nullptr;
   bool m_ready = false;

@@ -462,7 +462,6 @@ class CorotationalElements {
 
   template <class PerElement>
   void forEachElement(const ThreadPool& pool, std::size_t grain, PerElement&& perElement) {
-    // Two captured words: stored in place by std::function (no allocation per call).
     pool.parallelFor(size(), grain, [this, &perElement](std::size_t begin, std::size_t end) {
       for (std::size_t e = begin; e < end; ++e)
         perElement(e, Eigen::Map<Vectors>(m_corners[e * N].data()));
@@ -471,21 +470,14 @@ class CorotationalElements {
 
   // out[v] += factor * (corners around v, summed in increasing element order).
   void sumCorners(std::span<Vec3d> out, double factor, const ThreadPool& pool) const {
-    // One captured reference, so that the std::function of parallelFor stores the lambda in
-    // place instead of allocating it at every call.
-    const struct {
-      std::span<Vec3d> out;
-      double factor;
-    } target{out, factor};
     const std::size_t n = std::min(out.size(), pointCount());
-    pool.parallelFor(n, kVertexGrain, [this, &target](std::size_t begin, std::size_t end) {
-      const double factor = target.factor;
+    pool.parallelFor(n, kVertexGrain, [&](std::size_t begin, std::size_t end) {
       for (std::size_t v = begin; v < end; ++v) {
         const Index first = m_vertexOffsets[v], last = m_vertexOffsets[v + 1];
         if (first == last) continue;
         Vec3d sum = m_corners[m_vertexCorners[first]];
         for (Index c = first + 1; c < last; ++c) sum += m_corners[m_vertexCorners[c]];
-        target.out[v] += factor * sum;
+        out[v] += factor * sum;
       }
     });
   }

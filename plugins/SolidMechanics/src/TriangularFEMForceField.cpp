@@ -186,7 +186,6 @@ void TriangularFEMForceField::addForce(const MechanicalParams&, VecDeriv& f, con
 void TriangularFEMForceField::addDForce(const MechanicalParams& mp, VecDeriv& df,
                                         const VecDeriv& dx) {
   if (!m_ready || mp.kFactor == 0) return;
-  // Two captured pointers at most: the loop body then fits in std::function without allocating.
   m_kFactor = mp.kFactor;
   node()->threadPool().parallelFor(
       m_triangles.size(), 4 * kGrain, [this, &dx](std::size_t begin, std::size_t end) {
