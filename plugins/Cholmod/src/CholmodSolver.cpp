@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "SystemRows.h"
+#include "simulation/SystemRows.h"
 #include "simulation/MechanicalOperations.h"
 #include "simulation/Timing.h"
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "DependentDofs.h"
+#include "simulation/DependentDofs.h"
 #include "simulation/ProjectiveConstraint.h"
 #include "simulation/MechanicalOperations.h"
 #include "simulation/Timing.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "SystemRows.h"
+#include "simulation/SystemRows.h"
 #include "simulation/MechanicalOperations.h"
 #include "simulation/Timing.h"
 

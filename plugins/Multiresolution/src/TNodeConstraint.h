@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "DependentDofs.h"
+#include "simulation/DependentDofs.h"
 #include "MultiresolutionGrid.h"
 #include "core/StateTypes.h"
 #include "simulation/ProjectiveConstraint.h"
