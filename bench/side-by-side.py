@@ -84,7 +84,8 @@ def run_stroma(stroma, scene, steps, timeout, extra=()):
     out = subprocess.run(stroma_command(stroma, scene, steps) + list(extra), capture_output=True,
                          text=True, timeout=timeout)
     if out.returncode != 0:
-        raise RuntimeError(f"stroma run exited {out.returncode}:\n" + (out.stdout + out.stderr)[-2000:])
+        errors = [l for l in (out.stdout + out.stderr).splitlines() if "error" in l]
+        raise RuntimeError(f"stroma run exited {out.returncode}: " + (errors[0] if errors else ""))
     m = re.search(r"\(([0-9.e+-]+) steps/s\)", out.stdout)
     if not m:
         raise RuntimeError("stroma printed no rate:\n" + out.stdout[-2000:])

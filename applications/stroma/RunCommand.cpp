@@ -131,9 +131,10 @@ int runCommand(const std::vector<std::string>& args) {
     return usageError("--export-data needs --export-state FILE");
 
   Runtime runtime;
+  // The JSON log outlives the scene: the solvers' summaries at unload still write to it.
+  std::unique_ptr<std::ofstream> jsonFile;
   Scene scene(runtime);
   scene.setThreadCount(static_cast<int>(threads));
-  std::unique_ptr<std::ofstream> jsonFile;
   if (int code = loadScene(a, runtime, scene, jsonFile)) return code;
   if (dt <= 0) dt = scene.root().dt();
   std::vector<const BaseData*> printed, exported;
@@ -219,8 +220,8 @@ int checkCommand(const std::vector<std::string>& args) {
   std::string error;
   if (!parseArguments(args, kSceneOptions, {"--verbose"}, a, error)) return usageError(error);
   Runtime runtime;
+  std::unique_ptr<std::ofstream> jsonFile;  // outlives the scene (its unload still logs)
   Scene scene(runtime);
-  std::unique_ptr<std::ofstream> jsonFile;
   if (int code = loadScene(a, runtime, scene, jsonFile)) return code;
   std::size_t objects = 0, nodes = 0;
   std::vector<const Node*> stack{&scene.root()};

@@ -542,6 +542,31 @@ TEST(StromaCommand, RunWritesEveryMessageAsJsonLines) {
   EXPECT_EQ(stepErrors, 1);
 }
 
+TEST(StromaCommand, RunLogsTheSolversSummaryAtUnloadAsJsonLines) {
+  // CG capped at one iteration warns at the end of the run (its summary, written when the scene
+  // unloads): the JSON log must still be open then (it was closed first: a crash at exit).
+  TempDir dir;
+  const fs::path scene = dir.write("capped.scn", R"(<Node name="root" gravity="0 -9.81 0" dt="0.01">
+  <EulerImplicitSolver/>
+  <CGLinearSolver iterations="1" tolerance="1e-12" threshold="1e-30"/>
+  <MeshTopology tetrahedra="0 1 2 3"/>
+  <MechanicalObject position="0 0 0  1 0 0  0 1 0  0 0 1"/>
+  <UniformMass totalMass="1"/>
+  <TetrahedronFEMForceField youngModulus="1000" poissonRatio="0.3"/>
+  <FixedConstraint indices="0"/>
+</Node>
+)");
+  const fs::path log = dir.path() / "log.jsonl";
+  const CommandResult r = runStroma({"run", "-n", "5", "--log-json", log.string(), scene.string()});
+  EXPECT_EQ(r.exitCode, 0) << show(r);
+  std::ifstream in(log);
+  std::string line, last;
+  while (std::getline(in, line)) last = line;
+  std::map<std::string, std::string> object;
+  ASSERT_TRUE(JsonObjectReader(last).read(object)) << "not a JSON object: " << last;
+  EXPECT_TRUE(has(object["text"], "did not converge in 5 of 5 solves")) << last;
+}
+
 TEST(StromaCommand, CheckWritesLoadErrorsAsJsonLines) {
   TempDir dir;
   // The last value holds quotes, which the JSON text must escape.
