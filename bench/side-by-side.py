@@ -41,7 +41,7 @@ SCENES = [
     ("examples/Benchmark/Performance/MatrixAssembly/MatrixAssembly_assembledCG_blocs.scn", 200),
     ("examples/Benchmark/Performance/MatrixAssembly/MatrixAssembly_direct.scn", 200),
     ("examples/Benchmark/Performance/MatrixAssembly/MatrixAssembly_direct_blocs.scn", 200),
-    ("examples/Component/SolidMechanics/FEM/TetrahedralTensorMassForceField.scn", 1000),
+    ("examples/Component/SolidMechanics/TensorMass/TetrahedralTensorMassForceField.scn", 1000),
     ("examples/Component/SolidMechanics/FEM/HexahedronFEMForceField.scn", 1000),
     ("examples/Demos/liver.scn", 1000),
     ("examples/Demos/fallingBeamLagrangianCollision.scn", 100),
