@@ -1,62 +1,16 @@
 // SPDX-License-Identifier: MIT
 #include "LineProjectiveConstraint.h"
 
-#include "core/IndexChecks.h"
-
 namespace stroma {
 
-void LineProjectiveConstraint::init() {
-  ProjectiveConstraint<Vec3Types>::init();
-  m_checkedIndices = m_checkedDirection = 0;
-  if (!mstate()) return;
-  update();
-  if (d_indices.value().empty()) msgWarning("no index given: nothing is constrained", "indices");
+const Data<Vec3d>& LineProjectiveConstraint::axis() const { return d_direction; }
+
+constraint::AllowedMotion LineProjectiveConstraint::motionAlong(const Vec3d& unit) const {
+  return constraint::AllowedMotion::alongLine(unit);
 }
 
-void LineProjectiveConstraint::update() {
-  if (!mstate()) return;
-  if (d_indices.version() != m_checkedIndices) {
-    m_checkedIndices = d_indices.version();
-    // Checked first: the message's text allocates, and a linked list may change every step.
-    if (constraint::anyOutOfRange(d_indices.value(), mstate()->size()))
-      reportIndicesOutOfRange(*this, d_indices.value(), mstate()->size(), "indices",
-                              "points of " + mstate()->path());
-  }
-  if (d_direction.version() != m_checkedDirection) {
-    m_checkedDirection = d_direction.version();
-    Vec3d d;
-    if (constraint::unitVector(d_direction.value(), d)) {
-      m_motion = constraint::AllowedMotion::alongLine(d);
-    } else {
-      msgError(
-          "the direction is zero (or not finite): give a non-zero vector; the points are "
-          "left free",
-          "direction");
-      m_motion = {};
-    }
-  }
-}
-
-void LineProjectiveConstraint::projectResponse(VecDeriv& dx) {
-  constraint::projectDerivs(m_motion, d_indices.value(), dx);
-}
-
-void LineProjectiveConstraint::projectVelocity(VecDeriv& v, double) {
-  update();  // every step starts with this projection
-  constraint::projectDerivs(m_motion, d_indices.value(), v);
-}
-
-void LineProjectiveConstraint::projectPosition(VecCoord& x, double) {
-  constraint::projectPositions(m_motion, d_origin.value(), d_indices.value(), x);
-}
-
-void LineProjectiveConstraint::fixedRows(std::vector<std::size_t>& rows) const {
-  if (!mstate()) return;
-  if (!constraint::appendFixedRows(m_motion, d_indices.value(), mstate()->size(), rows) &&
-      !m_reportedAssembled) {
-    m_reportedAssembled = true;
-    msgWarning(constraint::kObliqueAssembledWarning, "direction");
-  }
+void LineProjectiveConstraint::projectPoints(VecCoord& x) {
+  constraint::projectPositions(motion(), d_origin.value(), d_indices.value(), x);
 }
 
 }  // namespace stroma

@@ -1,11 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <vector>
-
-#include "AllowedMotion.h"
-#include "core/StateTypes.h"
-#include "simulation/ProjectiveConstraint.h"
+#include "AxisProjectiveConstraint.h"
 
 namespace stroma {
 
@@ -16,32 +12,21 @@ namespace stroma {
 /// it. A normal along a coordinate axis is exact in an assembled matrix (that axis's rows are
 /// fixed); an oblique one is not (a warning at the first assembly, and the step's end projection
 /// alone enforces it). A zero normal is an error; indices out of range are reported and skipped.
-class PlaneProjectiveConstraint final : public ProjectiveConstraint<Vec3Types> {
+class PlaneProjectiveConstraint final : public AxisProjectiveConstraint {
  public:
-  Data<std::vector<unsigned>> d_indices{
-      this, "indices", {}, "Indices of the points kept on the plane."};
+  PlaneProjectiveConstraint() : AxisProjectiveConstraint("Indices of the points kept on the plane.") {}
+
   Data<Vec3d> d_origin{this, "origin", Vec3d::Zero(), "A point of the plane.", {.unit = "m"}};
   Data<Vec3d> d_normal{this, "normal", Vec3d(0, 0, 1),
                        "Normal of the plane (any length but zero; normalized)."};
   Data<double> d_drawSize{this, "drawSize", 0.0, "Viewers only."};
   Link<Base> l_topology{this, "topology", "SOFA option, accepted (indices refer to points)."};
 
-  void init() override;
-  void reinit() override { init(); }
-
-  void projectResponse(VecDeriv& dx) override;
-  void projectVelocity(VecDeriv& v, double time) override;
-  void projectPosition(VecCoord& x, double time) override;
-  void fixedRows(std::vector<std::size_t>& rows) const override;
-
-  const constraint::AllowedMotion& motion() const { return m_motion; }
 
  private:
-  /// Checks the indices and the normal again when they changed (they may while running).
-  void update();
-  constraint::AllowedMotion m_motion;
-  std::uint64_t m_checkedIndices = 0, m_checkedNormal = 0;
-  mutable bool m_reportedAssembled = false;
+  const Data<Vec3d>& axis() const override;
+  constraint::AllowedMotion motionAlong(const Vec3d& unit) const override;
+  void projectPoints(VecCoord& x) override;
 };
 
 }  // namespace stroma
