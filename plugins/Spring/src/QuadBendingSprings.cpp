@@ -55,37 +55,6 @@ void QuadBendingSprings<DataTypes>::build() {
   d_springs.setValue(std::move(springs));
 }
 
-template <class DataTypes>
-void QuadBendingSprings<DataTypes>::addForce(const MechanicalParams&, VecDeriv& f,
-                                             const VecCoord& x, const VecDeriv& v) {
-  if (m_topology && this->isValid() && m_topology->revision() != m_topologyRevision) build();
-  addSpringForces(d_springs.value(), SpringStates<kDimension>{x, x}, v, v, f, f);
-}
-
-template <class DataTypes>
-void QuadBendingSprings<DataTypes>::addDForce(const MechanicalParams& mp, VecDeriv& df,
-                                              const VecDeriv& dx) {
-  const VecCoord& x = this->mstate()->readCoord(mp.x);
-  const VecDeriv& v = this->mstate()->readDeriv(mp.v);
-  addSpringDForces(d_springs.value(), SpringStates<kDimension>{x, x, &v, &v}, dx, dx, df, df,
-                   mp.kFactor, mp.bFactor);
-}
-
-template <class DataTypes>
-void QuadBendingSprings<DataTypes>::addKToMatrix(const MechanicalParams& mp,
-                                                 MatrixAccumulator& matrix, std::size_t offset) {
-  const VecCoord& x = this->mstate()->readCoord(mp.x);
-  const VecDeriv& v = this->mstate()->readDeriv(mp.v);
-  addSpringMatrix(d_springs.value(), SpringStates<kDimension>{x, x, &v, &v}, matrix, offset, offset,
-                  mp.kFactor, mp.bFactor);
-}
-
-template <class DataTypes>
-double QuadBendingSprings<DataTypes>::potentialEnergy(const MechanicalParams&,
-                                                      const VecCoord& x) const {
-  return springEnergy(d_springs.value(), SpringStates<kDimension>{x, x});
-}
-
 template class QuadBendingSprings<Vec2Types>;
 template class QuadBendingSprings<Vec3Types>;
 

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "LinearSpring.h"
+#include "TopologySprings.h"
 #include "core/StateTypes.h"
 #include "simulation/ForceField.h"
 #include "topology/Topology.h"
@@ -20,11 +20,12 @@ namespace stroma {
 /// Forces, exact tangent stiffness and energy: SpringKernel.h. The springs are built at init and
 /// again when the topology changes; the built list is the output `spring`.
 template <class DataTypes>
-class QuadBendingSprings final : public ForceField<DataTypes> {
+class QuadBendingSprings final : public TopologySprings<DataTypes> {
  public:
-  using typename ForceField<DataTypes>::VecCoord;
-  using typename ForceField<DataTypes>::VecDeriv;
-  static constexpr int kDimension = DataTypes::derivSize;
+  using typename TopologySprings<DataTypes>::VecCoord;
+  using typename TopologySprings<DataTypes>::VecDeriv;
+  using TopologySprings<DataTypes>::kDimension;
+  using TopologySprings<DataTypes>::d_springs;
 
   Data<double> d_stiffness{
       this, "stiffness", 100.0, "Stiffness of every bending spring.", {.unit = "N/m", .min = 0.0}};
@@ -35,8 +36,6 @@ class QuadBendingSprings final : public ForceField<DataTypes> {
                          {.unit = "N s/m", .min = 0.0}};
   Data<Vec2i> d_localRange{this, "localRange", Vec2i(-1, -1),
                            "Keep only the springs with a point in [first, last] (-1: no bound)."};
-  Data<std::vector<LinearSpring>> d_springs{
-      this, "spring", {}, "The springs built from the mesh (output).", {.output = true}};
   Link<Topology> l_topology{this, "topology",
                             "Topology whose quads give the springs (default: the nearest one "
                             "from this node up)."};
@@ -44,18 +43,11 @@ class QuadBendingSprings final : public ForceField<DataTypes> {
   void init() override;
   void reinit() override { init(); }
 
-  void addForce(const MechanicalParams& mp, VecDeriv& f, const VecCoord& x,
-                const VecDeriv& v) override;
-  void addDForce(const MechanicalParams& mp, VecDeriv& df, const VecDeriv& dx) override;
-  void addKToMatrix(const MechanicalParams& mp, MatrixAccumulator& matrix,
-                    std::size_t offset) override;
-  double potentialEnergy(const MechanicalParams& mp, const VecCoord& x) const override;
 
  private:
-  void build();
-
-  const Topology* m_topology = nullptr;
-  std::uint64_t m_topologyRevision = 0;
+  using TopologySprings<DataTypes>::m_topology;
+  using TopologySprings<DataTypes>::m_topologyRevision;
+  void build() override;
 };
 
 }  // namespace stroma
