@@ -6,23 +6,6 @@
 
 namespace stroma {
 
-namespace {
-
-// a = M^-1 f(x, v) at a stage state, mapped states updated first.
-bool acceleration(MechanicalOperations& mop, double h, VecId x, VecId v, VecId a) {
-  mop.propagate(x, v);
-  MechanicalParams mp;
-  mp.dt = h;
-  mp.x = x;
-  mp.v = v;
-  mop.computeForce(mp, VecId::force());
-  if (!mop.accFromF(a, VecId::force())) return false;
-  mop.projectResponse(a);
-  return true;
-}
-
-}  // namespace
-
 void RungeKutta2Solver::solve(MechanicalOperations& mop, double dt) {
   if (!mop.hasState() || !checkTimeStep(*this, dt)) return;
   ++m_step;
@@ -31,11 +14,11 @@ void RungeKutta2Solver::solve(MechanicalOperations& mop, double dt) {
   const VecId xm = mop.allocCoord(), vm = mop.allocDeriv(), a = mop.allocDeriv();
 
   // Midpoint state y_n + h/2 F(y_n).
-  if (!acceleration(mop, h, x, v, a)) return;
+  if (!stageAcceleration(mop, h, x, v, a)) return;
   mop.vOp(xm, x, v, h / 2);
   mop.vOp(vm, v, a, h / 2);
   // y_{n+1} = y_n + h F(y_mid).
-  if (!acceleration(mop, h, xm, vm, a)) return;
+  if (!stageAcceleration(mop, h, xm, vm, a)) return;
   mop.vOp(x, x, vm, h);
   mop.vOp(v, v, a, h);
   mop.projectPosition(x);

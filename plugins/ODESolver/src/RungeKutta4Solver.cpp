@@ -6,23 +6,6 @@
 
 namespace stroma {
 
-namespace {
-
-// a = M^-1 f(x, v) at a stage state, mapped states updated first.
-bool acceleration(MechanicalOperations& mop, double h, VecId x, VecId v, VecId a) {
-  mop.propagate(x, v);
-  MechanicalParams mp;
-  mp.dt = h;
-  mp.x = x;
-  mp.v = v;
-  mop.computeForce(mp, VecId::force());
-  if (!mop.accFromF(a, VecId::force())) return false;
-  mop.projectResponse(a);
-  return true;
-}
-
-}  // namespace
-
 void RungeKutta4Solver::solve(MechanicalOperations& mop, double dt) {
   if (!mop.hasState() || !checkTimeStep(*this, dt)) return;
   ++m_step;
@@ -32,7 +15,7 @@ void RungeKutta4Solver::solve(MechanicalOperations& mop, double dt) {
   const VecId sumV = mop.allocDeriv(), sumA = mop.allocDeriv();
 
   // k1 = (v_n, a(x_n, v_n)).
-  if (!acceleration(mop, h, x, v, a)) return;
+  if (!stageAcceleration(mop, h, x, v, a)) return;
   if (!m_stability.check(mop, h, m_divergence, m_step)) return;  // linearized at (x_n, v_n)
   mop.vOp(sumV, v);
   mop.vOp(sumA, a);
@@ -40,14 +23,14 @@ void RungeKutta4Solver::solve(MechanicalOperations& mop, double dt) {
   mop.vOp(vs, v, a, h / 2);
   // k2 and k3 at the half step, weights 2; stage states y_n + c h k.
   for (const double c : {0.5, 1.0}) {
-    if (!acceleration(mop, h, xs, vs, a)) return;
+    if (!stageAcceleration(mop, h, xs, vs, a)) return;
     mop.vOp(sumV, sumV, vs, 2.0);
     mop.vOp(sumA, sumA, a, 2.0);
     mop.vOp(xs, x, vs, c * h);  // uses this stage's velocity before it is replaced
     mop.vOp(vs, v, a, c * h);
   }
   // k4 at the full step.
-  if (!acceleration(mop, h, xs, vs, a)) return;
+  if (!stageAcceleration(mop, h, xs, vs, a)) return;
   mop.vOp(sumV, sumV, vs);
   mop.vOp(sumA, sumA, a);
 

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Checks shared by every time integrator: a usable time step before the step, finite positions
-// and velocities after it, the divergence checks of DivergenceMonitor.h. Free functions rather than
-// a base class (STYLE.md section 4).
+// and velocities after it, the divergence checks of DivergenceMonitor.h; and the stage
+// acceleration of the explicit Runge-Kutta schemes. Free functions rather than a base class
+// (STYLE.md section 4).
 #pragma once
 
 #include <cmath>
@@ -57,6 +58,20 @@ inline bool checkLinearSolve(MechanicalOperations& mop, DivergenceMonitor& monit
   if (!check.diverged(report, linearSolver, reason)) return true;
   return monitor.report(mop, DivergenceKind::linearSolve, step, reason,
                         mop.describeWorstVertex(solution, "solution"), "maxLinearResidual");
+}
+
+/// a = M^-1 f(x, v) at a stage state of an explicit scheme (RungeKutta2Solver,
+/// RungeKutta4Solver), mapped states updated first. False when a mass cannot invert (reported).
+inline bool stageAcceleration(MechanicalOperations& mop, double h, VecId x, VecId v, VecId a) {
+  mop.propagate(x, v);
+  MechanicalParams mp;
+  mp.dt = h;
+  mp.x = x;
+  mp.v = v;
+  mop.computeForce(mp, VecId::force());
+  if (!mop.accFromF(a, VecId::force())) return false;
+  mop.projectResponse(a);
+  return true;
 }
 
 }  // namespace stroma
