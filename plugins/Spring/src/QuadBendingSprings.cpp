@@ -9,15 +9,7 @@ namespace stroma {
 
 template <class DataTypes>
 void QuadBendingSprings<DataTypes>::init() {
-  ForceField<DataTypes>::init();
-  if (!this->mstate()) return;
-  m_topology = findSpringTopology(*this, l_topology, "quads");
-  if (!m_topology) return;
-  if (m_topology->quads().empty()) {
-    this->msgError("the topology " + m_topology->path() + " has no quads", "topology");
-    return;
-  }
-  build();
+  this->initSprings(l_topology, "quads");
 }
 
 template <class DataTypes>

@@ -2,10 +2,12 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 #include "LinearSpring.h"
 #include "SpringKernel.h"
+#include "SpringPairs.h"
 #include "core/StateTypes.h"
 #include "simulation/ForceField.h"
 #include "topology/Topology.h"
@@ -51,6 +53,22 @@ class TopologySprings : public ForceField<DataTypes> {
  protected:
   /// Builds d_springs from m_topology, and records its revision in m_topologyRevision.
   virtual void build() = 0;
+
+  /// init() of a family: the state, the topology (`link`, else the nearest one from the node
+  /// up) that must hold `elements` ("triangles" or "quads"), then the springs. An error names
+  /// the field otherwise.
+  void initSprings(const Link<Topology>& link, const char* elements) {
+    ForceField<DataTypes>::init();
+    if (!this->mstate()) return;
+    m_topology = findSpringTopology(*this, link, elements);
+    if (!m_topology) return;
+    const bool quads = std::string_view(elements) == "quads";
+    if (quads ? m_topology->quads().empty() : m_topology->triangles().empty()) {
+      this->msgError("the topology " + m_topology->path() + " has no " + elements, "topology");
+      return;
+    }
+    build();
+  }
 
   const Topology* m_topology = nullptr;
   std::uint64_t m_topologyRevision = 0;

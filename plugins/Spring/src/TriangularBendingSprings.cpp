@@ -9,15 +9,7 @@ namespace stroma {
 
 template <class DataTypes>
 void TriangularBendingSprings<DataTypes>::init() {
-  ForceField<DataTypes>::init();
-  if (!this->mstate()) return;
-  m_topology = findSpringTopology(*this, l_topology, "triangles");
-  if (!m_topology) return;
-  if (m_topology->triangles().empty()) {
-    this->msgError("the topology " + m_topology->path() + " has no triangles", "topology");
-    return;
-  }
-  build();
+  this->initSprings(l_topology, "triangles");
 }
 
 template <class DataTypes>
