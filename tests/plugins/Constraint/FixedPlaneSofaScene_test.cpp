@@ -2,7 +2,7 @@
 // SOFA's FixedPlaneProjectiveConstraint.scn (a liver with the points of a slab along z kept in
 // their planes, hanging from a BoxConstraint, with its collision pipeline) runs unmodified and
 // follows SOFA's trajectory: after 100 steps (2 s) the positions are within 2e-5 of SOFA's
-// (sofa-fixed-plane-liver-positions.txt, from scripts/make-sofa-projective-references.sh;
+// (sofa-fixed-plane-liver-positions.txt, from scripts/make-sofa-references.sh;
 // measured 5e-6 per coordinate, SOFA's file keeping 6 significant digits), the liver having
 // moved by 0.15 (more than 0.1 asserted).
 #include <gtest/gtest.h>

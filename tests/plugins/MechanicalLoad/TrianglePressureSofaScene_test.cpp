@@ -2,7 +2,7 @@
 // SOFA's TrianglePressureForceField.scn (a cylinder fixed at its base, a pressure on the
 // triangles of its top selected by a BoxROI, with its collision pipeline) runs unmodified and
 // follows SOFA's trajectory: after 100 steps (5 s) the positions are within 1e-3 of SOFA's
-// (sofa-triangle-pressure-positions.txt, from scripts/make-sofa-projective-references.sh;
+// (sofa-triangle-pressure-positions.txt, from scripts/make-sofa-references.sh;
 // measured 1.7e-4 per coordinate on a body of size 1.15: 5e-6 up to 20 steps, then SOFA's
 // and Stroma's unconverged CG solves, 25 iterations, drift apart), the cylinder having moved
 // by 0.82 (more than 0.1 asserted).

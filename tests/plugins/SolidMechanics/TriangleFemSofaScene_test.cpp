@@ -4,7 +4,7 @@
 // TriangleFEMForceField large, implicit Euler with CG limited to 25 iterations, with its collision
 // pipeline) runs unmodified and follows SOFA's trajectory: after 100 steps (5 s) the positions are
 // compared with SOFA's (sofa-triangle-fem-m{1,2,3}-positions.txt, from
-// scripts/make-sofa-membrane-references.sh). Measured differences per coordinate: 3.8e-3 (M1,
+// scripts/make-sofa-references.sh). Measured differences per coordinate: 3.8e-3 (M1,
 // moved 6.2), 1.4e-2 (M2, moved 6.6), 1.8e-2 (M3, moved 1.8; its 10 x 10 sheet is the furthest from
 // a converged CG solve). SOFA's TriangleFEMForceField and Stroma's element are 0.5 % apart at
 // strains of 1e-2 in converged runs (Stroma is SOFA's TriangularFEMForceFieldOptim there; plugin
