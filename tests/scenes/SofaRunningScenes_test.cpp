@@ -27,7 +27,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kSofaDir = fs::path(STROMA_SHARED_DIR) / "sofa";
+const fs::path kSofaDir = SofaScenesFixture::kSofaDir;
 constexpr int kSteps = 10;
 
 std::vector<std::string> runningScenes() {
@@ -62,31 +62,15 @@ std::string leftOutPluginUsed(Runtime& runtime, const MessageLog& log) {
   return {};
 }
 
-class SofaRunningScenes : public ::testing::TestWithParam<std::string> {
+class SofaRunningScenes : public ::testing::TestWithParam<std::string>,
+                          protected SofaScenesFixture {
  protected:
   void SetUp() override {
-    if (!fs::is_directory(kSofaDir / "examples"))
+    if (!enterSofaFolder("sofa-running"))
       GTEST_SKIP() << "SOFA's scenes are not at " << kSofaDir
                    << " (the shared test data lives beside the clone)";
-    runtime.addDataDirectory(kSofaDir / "share");
-    runtime.addDataDirectory(kSofaDir / "examples");
-    // Exporters in SOFA's scenes (VTKExporter, WriteState) write into the current folder: a
-    // folder of the test's own, not the clone.
-    m_before = fs::current_path();
-    m_folder = fs::temp_directory_path() / ("stroma-sofa-running-" + std::to_string(::getpid()));
-    fs::create_directories(m_folder);
-    fs::current_path(m_folder);
   }
-  void TearDown() override {
-    if (m_folder.empty()) return;
-    fs::current_path(m_before);
-    std::error_code ignored;
-    fs::remove_all(m_folder, ignored);
-  }
-  Runtime runtime;
-
- private:
-  fs::path m_before, m_folder;
+  void TearDown() override { leaveSofaFolder(); }
 };
 
 TEST_P(SofaRunningScenes, LoadsAndRunsWithoutError) {

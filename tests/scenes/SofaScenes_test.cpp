@@ -14,6 +14,7 @@
 
 #include "core/Runtime.h"
 #include "plugins/TestPlugin/TestSupport.h"
+#include "scenes/SceneLists.h"
 #include "simulation/Scene.h"
 
 namespace stroma::test {
@@ -21,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kSofaDir = fs::path(STROMA_SHARED_DIR) / "sofa";
+const fs::path kSofaDir = SofaScenesFixture::kSofaDir;
 
 /// True when the error says that the component itself is missing from Stroma: an unknown
 /// class, a SOFA class that Stroma does not provide, or a template variant it lacks
@@ -216,31 +217,14 @@ std::vector<fs::path> sofaScenes() {
   return scenes;
 }
 
-class SofaScenes : public ::testing::Test {
+class SofaScenes : public ::testing::Test, protected SofaScenesFixture {
  protected:
   void SetUp() override {
-    if (!fs::is_directory(kSofaDir / "examples"))
+    if (!enterSofaFolder("sofa-scenes"))
       GTEST_SKIP() << "SOFA's example scenes are not at " << kSofaDir
                    << " (the shared test data lives beside the clone)";
-    runtime.addDataDirectory(kSofaDir / "share");
-    runtime.addDataDirectory(kSofaDir / "examples");
-    // Exporters in SOFA's scenes (VTKExporter, WriteState) write at load into the current
-    // folder: a folder of the test's own, not the clone.
-    m_before = fs::current_path();
-    m_folder = fs::temp_directory_path() / ("stroma-sofa-scenes-" + std::to_string(::getpid()));
-    fs::create_directories(m_folder);
-    fs::current_path(m_folder);
   }
-  void TearDown() override {
-    if (m_folder.empty()) return;
-    fs::current_path(m_before);
-    std::error_code ignored;
-    fs::remove_all(m_folder, ignored);
-  }
-  Runtime runtime;
-
- private:
-  fs::path m_before, m_folder;
+  void TearDown() override { leaveSofaFolder(); }
 };
 
 TEST_F(SofaScenes, LoadOrFailOnlyOnComponentsStromaLacks) {
